@@ -1,0 +1,139 @@
+"""The reference: VTK (through PyVista, offscreen) draws the same triangles.
+
+Set-up, following ``shared/docs/vtk-parity.md``: exactly the scene's lights (no light
+kit), no anti-aliasing of any kind, the scene's camera with the clipping range set last
+(or fitted by VTK's own ``ResetCameraClippingRange`` when the scene gives none), float
+colours set directly on ``vtkProperty``/``vtkLight``, the same triangles and point
+normals as scanlab's renderer, the model transform given to VTK as its column-vector
+matrix (the transpose of ours). Coverage comes from VTK's depth buffer.
+"""
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from compare.vtk_backend import pyvista
+from lab.frame import Frame
+
+INTERPOLATION = {"flat": 0, "gouraud": 1, "phong": 2}  # VTK_FLAT, VTK_GOURAUD, VTK_PHONG
+
+
+def _polydata(pv, mesh):
+    poly = pv.PolyData.from_regular_faces(mesh.points, mesh.triangles)
+    if mesh.point_normals is not None:
+        poly.point_data["Normals"] = mesh.point_normals
+        poly.point_data.active_normals_name = "Normals"
+    return poly
+
+
+def _actor(pv, obj):
+    import vtk
+
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputData(_polydata(pv, obj.mesh))
+    mapper.ScalarVisibilityOff()
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    user = vtk.vtkMatrix4x4()
+    column = obj.model_to_world.T  # VTK multiplies column vectors: its matrix is our transpose
+    for i in range(4):
+        for j in range(4):
+            user.SetElement(i, j, float(column[i, j]))
+    actor.SetUserMatrix(user)
+    m, prop = obj.material, actor.GetProperty()
+    prop.SetColor(*m.color)  # ambient, diffuse and specular colours
+    if m.specular_color is not None:
+        prop.SetSpecularColor(*m.specular_color)
+    prop.SetAmbient(m.ambient)
+    prop.SetDiffuse(m.diffuse)
+    prop.SetSpecular(m.specular)
+    prop.SetSpecularPower(m.specular_power)
+    prop.SetOpacity(m.opacity)
+    prop.SetInterpolation(INTERPOLATION[obj.shading])
+    prop.SetLighting(m.lighting)
+    return actor
+
+
+def _light(light):
+    import vtk
+
+    v = vtk.vtkLight()
+    {"scene": v.SetLightTypeToSceneLight, "camera": v.SetLightTypeToCameraLight,
+     "headlight": v.SetLightTypeToHeadlight}[light.kind]()
+    v.SetPosition(*light.position)
+    v.SetFocalPoint(*light.focal_point)
+    v.SetColor(*light.color)
+    v.SetIntensity(light.intensity)
+    v.SetPositional(light.positional)
+    v.SetConeAngle(light.cone_angle)
+    v.SetExponent(light.exponent)
+    v.SetAttenuationValues(*light.attenuation)
+    v.SetSwitch(light.on)
+    return v
+
+
+def _set_camera(renderer, cam):
+    c = renderer.GetActiveCamera()
+    c.SetPosition(*cam.position)
+    c.SetFocalPoint(*cam.focal_point)
+    c.SetViewUp(*cam.view_up)
+    c.SetViewAngle(cam.view_angle)
+    c.SetParallelProjection(cam.parallel)
+    c.SetParallelScale(cam.parallel_scale)
+    if cam.clipping_range is not None:  # last: nothing may re-fit it afterwards
+        c.SetClippingRange(*cam.clipping_range)
+    else:
+        renderer.ResetCameraClippingRange()
+
+
+def build_plotter(scene):
+    """A PyVista offscreen plotter holding the scene, ready to render (not yet rendered)."""
+    pv = pyvista()
+    width, height = scene.image.size
+    pl = pv.Plotter(off_screen=True, window_size=(width, height), lighting="none")
+    pl.ren_win.SetMultiSamples(0)
+    pl.disable_anti_aliasing()
+    pl.renderer.SetBackground(*scene.image.background)
+    pl.renderer.SetTwoSidedLighting(True)
+    for obj in scene.objects:
+        pl.renderer.AddActor(_actor(pv, obj))
+    for light in scene.lights:
+        pl.renderer.AddLight(_light(light))
+    pl.camera_set = True  # PyVista must not reset the camera on the first render
+    _set_camera(pl.renderer, scene.camera)
+    return pl
+
+
+def read_frame(pl) -> Frame:
+    """The rendered colour and depth buffers as a :class:`Frame` (row 0 at the top)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    import vtk
+
+    rw = pl.ren_win
+    width, height = rw.GetSize()
+    rgba = vtk.vtkUnsignedCharArray()
+    rw.GetRGBACharPixelData(0, 0, width - 1, height - 1, 0, rgba, 0)  # back buffer, left
+    rgb = vtk_to_numpy(rgba).reshape(height, width, 4)[::-1, :, :3]
+    z = vtk.vtkFloatArray()
+    rw.GetZbufferData(0, 0, width - 1, height - 1, z)
+    depth = vtk_to_numpy(z).reshape(height, width)[::-1].astype(np.float64)
+    return Frame(rgb=np.ascontiguousarray(rgb), depth=np.ascontiguousarray(depth), coverage=depth < 1.0)
+
+
+def render_reference(scene, timings: dict | None = None) -> Frame:
+    """Draw ``scene`` with VTK offscreen and return its :class:`Frame`.
+
+    ``timings``, if given, receives ``"reference_ms"``: the time of VTK's render call plus
+    the read-back of colour and depth (the plotter's construction is not counted).
+    """
+    pl = build_plotter(scene)
+    try:
+        t0 = time.perf_counter()
+        pl.ren_win.Render()
+        frame = read_frame(pl)
+        if timings is not None:
+            timings["reference_ms"] = (time.perf_counter() - t0) * 1e3
+        return frame
+    finally:
+        pl.close()

@@ -1,0 +1,55 @@
+"""The one door to VTK: offscreen set-up, and the check that an OpenGL context exists.
+
+Nothing else in scanlab imports vtk or pyvista. ``VTK_DEFAULT_OPENGL_WINDOW`` must be set
+before VTK loads; EGL (Mesa's llvmpipe on a machine with no display) is the default.
+"""
+from __future__ import annotations
+
+import functools
+import os
+import subprocess
+import sys
+
+os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+
+PACKAGES_HINT = ("install Mesa's offscreen OpenGL: on Debian/Ubuntu `apt-get install libegl1 libegl-mesa0 "
+                 "libgl1-mesa-dri` (EGL), or `libosmesa6` with VTK_DEFAULT_OPENGL_WINDOW=vtkOSOpenGLRenderWindow")
+
+_PROBE = """
+import os
+os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+import vtk
+rw = vtk.vtkRenderWindow(); rw.SetOffScreenRendering(1); rw.SetSize(8, 8)
+rw.AddRenderer(vtk.vtkRenderer()); rw.Render()
+raise SystemExit(0 if rw.SupportsOpenGL() else 3)
+"""
+
+
+class ReferenceUnavailable(RuntimeError):
+    """VTK cannot draw here (no offscreen OpenGL context, or vtk missing)."""
+
+
+@functools.lru_cache(maxsize=1)
+def check_offscreen_gl() -> None:
+    """Make sure VTK can open an offscreen OpenGL context; raise :class:`ReferenceUnavailable` if not.
+
+    The probe runs in a child process, because a failed context can abort the process
+    that tried it. Runs once per process.
+    """
+    try:
+        result = subprocess.run([sys.executable, "-c", _PROBE], capture_output=True, timeout=120, text=True)
+    except (OSError, subprocess.TimeoutExpired) as exc:
+        raise ReferenceUnavailable(f"VTK offscreen OpenGL probe failed ({exc}); {PACKAGES_HINT}") from None
+    if result.returncode != 0:
+        last = (result.stderr.strip().splitlines() or ["no message"])[-1][:160]
+        if "No module named" in last:
+            raise ReferenceUnavailable(f"VTK is not installed ({last}); run `make demo` or `pip install -e .`")
+        raise ReferenceUnavailable(f"VTK could not create an offscreen OpenGL context ({last}); {PACKAGES_HINT}")
+
+
+def pyvista():
+    """Import and return pyvista after the offscreen check."""
+    check_offscreen_gl()
+    import pyvista as pv
+
+    return pv

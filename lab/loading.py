@@ -1,0 +1,300 @@
+"""Loading scenes: TOML scene files and built-in shape names → :class:`lab.scene.Scene`.
+
+All validation happens here, at the edge; a problem raises :class:`SceneError` whose
+one-line message names the file and the key. Colours are quantised to k/255 on loading
+(VTK's ``vtkColor`` keeps no more), so both renderers start from the same numbers.
+"""
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from lab import shapes
+from lab.mesh import Mesh
+from lab.scene import LIGHT_KINDS, SHADINGS, Camera, Image, Light, Material, Scene, SceneObject, headlight
+from renderer.transform import model_matrix
+
+MAX_SIZE = 8192
+SCENES_DIR = Path(__file__).parent / "scenes"
+
+
+class SceneError(ValueError):
+    """A scene file, shape name or option that cannot be used; the message says why."""
+
+
+# --------------------------------------------------------------------------- values
+class _Section:
+    """Reads typed values from one TOML table, naming ``file: table.key`` in errors."""
+
+    def __init__(self, source: str, where: str, table: dict, allowed: set[str]):
+        self.source, self.where, self.table = source, where, table
+        for key in table:
+            if key not in allowed:
+                near = difflib.get_close_matches(key, sorted(allowed), n=1)
+                hint = f" (did you mean '{near[0]}'?)" if near else f" (valid: {', '.join(sorted(allowed))})"
+                raise self.error(key, f"unknown key{hint}")
+
+    def error(self, key: str, message: str) -> SceneError:
+        where = f"{self.where}.{key}" if self.where else key
+        return SceneError(f"{self.source}: {where}: {message}")
+
+    def number(self, key, default, lo=-math.inf, hi=math.inf, lo_open=False, hi_open=False):
+        v = self.table.get(key, default)
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise self.error(key, f"expected a number, got {v!r}")
+        v = float(v)
+        if not math.isfinite(v):
+            raise self.error(key, f"must be finite, got {v!r}")
+        if v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi):
+            lb = "(" if lo_open else "["
+            hb = ")" if hi_open else "]"
+            raise self.error(key, f"{v:g} is outside {lb}{lo:g}, {hi:g}{hb}")
+        return v
+
+    def vector(self, key, default, n=3, lo=-math.inf, hi=math.inf):
+        v = self.table.get(key, default)
+        if v is None:
+            return None
+        if not isinstance(v, (list, tuple)) or len(v) != n:
+            raise self.error(key, f"expected a list of {n} numbers, got {v!r}")
+        out = []
+        for x in v:
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x):
+                raise self.error(key, f"expected {n} finite numbers, got {v!r}")
+            if x < lo or x > hi:
+                raise self.error(key, f"values must lie in [{lo:g}, {hi:g}], got {v!r}")
+            out.append(float(x))
+        return tuple(out)
+
+    def colour(self, key, default):
+        c = self.vector(key, default, 3, 0.0, 1.0)
+        return None if c is None else quantise_colour(c)
+
+    def flag(self, key, default):
+        v = self.table.get(key, default)
+        if not isinstance(v, bool):
+            raise self.error(key, f"expected true or false, got {v!r}")
+        return v
+
+    def choice(self, key, default, choices):
+        v = self.table.get(key, default)
+        if v not in choices:
+            raise self.error(key, f"{v!r} is not one of {', '.join(choices)}")
+        return v
+
+
+def quantise_colour(c) -> tuple[float, float, float]:
+    """Round a linear 0..1 RGB colour to k/255, as ``vtkColor``/``pv.Color`` store it."""
+    return tuple(round(float(x) * 255.0) / 255.0 for x in c)
+
+
+# --------------------------------------------------------------------------- sections
+def _image(src, table) -> Image:
+    s = _Section(src, "image", table, {"size", "background"})
+    size = s.vector("size", (512, 384), 2)
+    if any(x != int(x) or x < 1 or x > MAX_SIZE for x in size):
+        raise s.error("size", f"expected two whole numbers in 1..{MAX_SIZE}, got {list(size)}")
+    return Image(size=(int(size[0]), int(size[1])), background=s.colour("background", (1.0, 1.0, 1.0)))
+
+
+def _camera(src, table) -> Camera:
+    s = _Section(src, "camera", table, {"position", "focal_point", "view_up", "view_angle",
+                                       "clipping_range", "parallel", "parallel_scale"})
+    pos = s.vector("position", (0.0, 0.0, 1.0))
+    foc = s.vector("focal_point", (0.0, 0.0, 0.0))
+    up = s.vector("view_up", (0.0, 1.0, 0.0))
+    d = np.subtract(pos, foc)
+    if np.linalg.norm(d) == 0:
+        raise s.error("position", "equals focal_point; the view direction is undefined")
+    if np.linalg.norm(np.cross(up, d)) <= 1e-12 * np.linalg.norm(d) * max(np.linalg.norm(up), 1e-300):
+        raise s.error("view_up", "is parallel to the view direction (or zero)")
+    rng = s.vector("clipping_range", None, 2)
+    if rng is not None and not (0 < rng[0] < rng[1]):
+        raise s.error("clipping_range", f"needs 0 < near < far, got {list(rng)}")
+    return Camera(position=pos, focal_point=foc, view_up=up,
+                  view_angle=s.number("view_angle", 30.0, 0.0, 180.0, True, True),
+                  clipping_range=rng, parallel=s.flag("parallel", False),
+                  parallel_scale=s.number("parallel_scale", 1.0, 0.0, lo_open=True))
+
+
+def _light(src, i, table) -> Light:
+    s = _Section(src, f"light[{i}]", table, {"kind", "position", "focal_point", "color", "intensity", "positional",
+                                             "cone_angle", "exponent", "attenuation", "on"})
+    kind = s.choice("kind", "scene", LIGHT_KINDS)
+    att = s.vector("attenuation", (1.0, 0.0, 0.0), 3, 0.0)
+    if sum(att) <= 0:
+        raise s.error("attenuation", "needs at least one positive coefficient")
+    return Light(kind=kind, position=s.vector("position", (0.0, 0.0, 1.0)),
+                 focal_point=s.vector("focal_point", (0.0, 0.0, 0.0)),
+                 color=s.colour("color", (1.0, 1.0, 1.0)),
+                 intensity=s.number("intensity", 1.0, 0.0, 1e3),
+                 positional=s.flag("positional", False),
+                 cone_angle=s.number("cone_angle", 90.0, 0.0, 180.0, lo_open=True),
+                 exponent=s.number("exponent", 1.0, 0.0, 128.0),
+                 attenuation=att, on=s.flag("on", True))
+
+
+OBJECT_KEYS = {"mesh", "shape", "params", "color", "ambient", "diffuse", "specular", "specular_power",
+               "specular_color", "opacity", "shading", "scale", "rotate", "translate", "lighting", "name"}
+
+
+def _object(src, base: Path | None, i, table) -> SceneObject:
+    s = _Section(src, f"object[{i}]", table, OBJECT_KEYS)
+    if ("mesh" in table) == ("shape" in table):
+        raise s.error("mesh", "give exactly one of 'mesh' (a file) or 'shape' (a built-in shape)")
+    if "mesh" in table:
+        mesh = _mesh_file(s, base, table["mesh"])
+        name = Path(str(table["mesh"])).stem
+    else:
+        params = table.get("params", {})
+        if not isinstance(params, dict):
+            raise s.error("params", f"expected a table like {{ level = 3 }}, got {params!r}")
+        mesh = make_shape(table["shape"], params, where=lambda m: s.error("shape", m))
+        name = str(table["shape"])
+    mat = Material(color=s.colour("color", (1.0, 1.0, 1.0)), ambient=s.number("ambient", 0.0, 0.0, 1.0),
+                   diffuse=s.number("diffuse", 1.0, 0.0, 1.0), specular=s.number("specular", 0.0, 0.0, 1.0),
+                   specular_power=s.number("specular_power", 1.0, 0.0, 1000.0),
+                   specular_color=s.colour("specular_color", None), opacity=s.number("opacity", 1.0, 0.0, 1.0),
+                   lighting=s.flag("lighting", True))
+    m = model_matrix(scale=s.vector("scale", (1.0, 1.0, 1.0)), rotate=s.vector("rotate", (0.0, 0.0, 0.0)),
+                     translate=s.vector("translate", (0.0, 0.0, 0.0)))
+    if abs(np.linalg.det(m[:3, :3])) < 1e-300:
+        raise s.error("scale", "a zero scale flattens the object")
+    return SceneObject(mesh=mesh, material=mat, shading=s.choice("shading", "flat", SHADINGS),
+                       model_to_world=m, name=str(table.get("name", name)))
+
+
+def _mesh_file(s: _Section, base: Path | None, value) -> Mesh:
+    from lab.meshfiles import MeshFileError, read_mesh
+
+    if not isinstance(value, str):
+        raise s.error("mesh", f"expected a file name, got {value!r}")
+    path = Path(value) if base is None else base / value
+    try:
+        return read_mesh(path)
+    except MeshFileError as exc:
+        raise s.error("mesh", str(exc)) from None
+
+
+# --------------------------------------------------------------------------- shapes
+def make_shape(name, params: dict, where=None) -> Mesh:
+    """Build a built-in shape by name with keyword parameters, checking both."""
+    err = where or (lambda m: SceneError(m))
+    if name not in shapes.SHAPES:
+        raise err(f"unknown shape {name!r}; valid: {', '.join(shapes.SHAPES)}")
+    try:
+        import inspect
+
+        sig = inspect.signature(shapes.SHAPES[name])
+        for key, value in params.items():
+            if key not in sig.parameters:
+                raise err(f"{name} has no parameter {key!r}; valid: {', '.join(sig.parameters)}")
+            default = sig.parameters[key].default
+            if isinstance(default, int) and (not isinstance(value, int) or isinstance(value, bool) or not 0 <= value <= 8):
+                raise err(f"{name}: {key} must be a whole number in 0..8, got {value!r}")
+            if isinstance(default, float) and (isinstance(value, bool) or not isinstance(value, (int, float))
+                                               or not math.isfinite(value) or value <= 0):
+                raise err(f"{name}: {key} must be a positive number, got {value!r}")
+        return shapes.SHAPES[name](**params)
+    except SceneError:
+        raise
+
+
+def parse_shape_spec(spec: str) -> tuple[str, dict]:
+    """``"icosphere:level=3,radius=2"`` → ``("icosphere", {"level": 3, "radius": 2.0})``."""
+    name, _, rest = spec.partition(":")
+    params = {}
+    for item in filter(None, rest.split(",")):
+        key, eq, value = item.partition("=")
+        if not eq:
+            raise SceneError(f"{spec}: expected key=value, got {item!r}")
+        try:
+            params[key.strip()] = int(value)
+        except ValueError:
+            try:
+                params[key.strip()] = float(value)
+            except ValueError:
+                raise SceneError(f"{spec}: {key}: expected a number, got {value!r}") from None
+    return name.strip(), params
+
+
+def default_camera(bounds: np.ndarray, view_angle: float = 30.0) -> Camera:
+    """A camera that frames ``bounds`` the way ``vtkRenderer::ResetCamera`` does.
+
+    Focal point at the bounds' centre; distance = radius / sin(view_angle / 2) with radius
+    half the bounds' diagonal; looking from the direction (1, 0.8, 1.6) with y up.
+    """
+    lo, hi = bounds[0::2], bounds[1::2]
+    centre = (lo + hi) / 2.0
+    radius = max(float(np.linalg.norm(hi - lo)) / 2.0, 1e-6)
+    dist = radius / math.sin(math.radians(view_angle) / 2.0)
+    direction = np.array([1.0, 0.8, 1.6]) / np.linalg.norm([1.0, 0.8, 1.6])
+    return Camera(position=tuple(centre + dist * direction), focal_point=tuple(centre), view_up=(0.0, 1.0, 0.0),
+                  view_angle=view_angle)
+
+
+def shape_scene(spec: str) -> Scene:
+    """A scene of one built-in shape: grey-blue material, default camera, one headlight."""
+    name, params = parse_shape_spec(spec)
+    mesh = make_shape(name, params, where=lambda m: SceneError(f"{spec}: {m}"))
+    mat = Material(color=quantise_colour((0.6, 0.7, 0.9)), ambient=0.1, diffuse=0.8, specular=0.3,
+                   specular_power=20.0)
+    obj = SceneObject(mesh=mesh, material=mat, name=name)
+    cam = default_camera(obj.world_bounds())
+    return Scene(image=Image(), camera=cam, lights=(headlight(),), objects=(obj,), source=spec)
+
+
+# --------------------------------------------------------------------------- entry point
+def load_scene(path_or_name) -> Scene:
+    """Load a scene file (TOML), a preset name from ``lab/scenes``, or a shape spec.
+
+    Examples
+    --------
+    >>> load_scene("icosphere:level=1").objects[0].mesh.n_triangles
+    80
+    """
+    text = str(path_or_name)
+    path = Path(text)
+    if path.suffix.lower() != ".toml":
+        preset = SCENES_DIR / f"{text}.toml"
+        if preset.is_file():
+            path = preset
+        elif text.partition(":")[0] in shapes.SHAPES:
+            return shape_scene(text)
+        elif not path.exists():
+            raise SceneError(f"{text}: no such scene file, preset or shape "
+                             f"(shapes: {', '.join(shapes.SHAPES)}; presets: `scanlab scenes`)")
+    try:
+        raw = path.read_bytes()
+    except OSError as exc:
+        raise SceneError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    try:
+        data = tomllib.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise SceneError(f"{path}: not a UTF-8 text file") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"{path}: TOML syntax error: {exc}") from None
+    return scene_from_dict(data, source=str(path), base=path.parent)
+
+
+def scene_from_dict(data: dict, source: str = "<scene>", base: Path | None = None) -> Scene:
+    """Build a validated :class:`Scene` from parsed TOML (see the README for the keys)."""
+    _Section(source, "", data, {"image", "camera", "light", "object"})
+
+    def table(key, want):
+        v = data.get(key, want())
+        if not isinstance(v, type(want())) or (isinstance(v, list) and not all(isinstance(t, dict) for t in v)):
+            kind = "a table [" + key + "]" if want is dict else "tables [[" + key + "]]"
+            raise SceneError(f"{source}: {key}: expected {kind}")
+        return v
+
+    objects = tuple(_object(source, base, i, t) for i, t in enumerate(table("object", list)))
+    if not objects:
+        raise SceneError(f"{source}: object: the scene has no [[object]]")
+    lights = tuple(_light(source, i, t) for i, t in enumerate(table("light", list))) or (headlight(),)
+    return Scene(image=_image(source, table("image", dict)), camera=_camera(source, table("camera", dict)),
+                 lights=lights, objects=objects, source=source)

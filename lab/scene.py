@@ -1,0 +1,159 @@
+"""The scene model: dataclasses that both renderers read.
+
+Every value here has already been validated by :mod:`lab.loading`; the renderers trust
+it. Conventions:
+
+- World space is right-handed; vectors are rows (``P' = P @ M``, as in the course).
+- Colours are linear 0..1 RGB floats, already quantised to k/255 (what VTK keeps of a
+  colour), so both renderers start from identical numbers.
+- Angles are in degrees.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+
+from lab.mesh import Mesh
+
+SHADINGS = ("flat", "gouraud", "phong")
+LIGHT_KINDS = ("scene", "camera", "headlight")
+
+Vec3 = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Image:
+    """Output image: ``size`` = (width, height) in pixels, ``background`` linear 0..1 RGB."""
+
+    size: tuple[int, int] = (512, 384)
+    background: Vec3 = (1.0, 1.0, 1.0)
+
+
+@dataclass(frozen=True)
+class Camera:
+    """A VTK-style camera in world space.
+
+    ``view_angle`` is the vertical field of view in degrees; ``clipping_range`` is
+    (near, far) distances along the view direction, or None to fit it to the scene bounds
+    as ``vtkRenderer::ResetCameraClippingRange`` does; ``parallel_scale`` is half the view
+    height in world units (parallel projection only).
+    """
+
+    position: Vec3 = (0.0, 0.0, 1.0)
+    focal_point: Vec3 = (0.0, 0.0, 0.0)
+    view_up: Vec3 = (0.0, 1.0, 0.0)
+    view_angle: float = 30.0
+    clipping_range: tuple[float, float] | None = None
+    parallel: bool = False
+    parallel_scale: float = 1.0
+
+
+@dataclass(frozen=True)
+class Light:
+    """A VTK light.
+
+    ``kind``: "scene" (position/focal point in world space), "camera" (in the camera's
+    frame: (0, 0, 1) is the camera, (0, 0, 0) the focal point, lengths in units of the
+    camera distance) or "headlight" (at the camera, aimed at the focal point; position and
+    focal point ignored). ``color`` linear 0..1 RGB times ``intensity`` is the light's
+    colour. ``positional`` makes a point light, a spot light when ``cone_angle`` < 90
+    (degrees, half-angle) with falloff ``cos^exponent``; ``attenuation`` = (constant,
+    linear, quadratic) applies to positional lights only.
+    """
+
+    kind: str = "scene"
+    position: Vec3 = (0.0, 0.0, 1.0)
+    focal_point: Vec3 = (0.0, 0.0, 0.0)
+    color: Vec3 = (1.0, 1.0, 1.0)
+    intensity: float = 1.0
+    positional: bool = False
+    cone_angle: float = 90.0
+    exponent: float = 1.0
+    attenuation: Vec3 = (1.0, 0.0, 0.0)
+    on: bool = True
+
+
+@dataclass(frozen=True)
+class Material:
+    """VTK's surface property: coefficients 0..1, colours linear 0..1 RGB.
+
+    ``specular_color`` None means the object colour (VTK's ``color=`` sets all three).
+    ``lighting`` False draws ``ambient·color + diffuse·color`` unlit.
+    """
+
+    color: Vec3 = (1.0, 1.0, 1.0)
+    ambient: float = 0.0
+    diffuse: float = 1.0
+    specular: float = 0.0
+    specular_power: float = 1.0
+    specular_color: Vec3 | None = None
+    opacity: float = 1.0
+    lighting: bool = True
+
+    @property
+    def effective_specular_color(self) -> Vec3:
+        return self.color if self.specular_color is None else self.specular_color
+
+
+@dataclass(frozen=True, eq=False)
+class SceneObject:
+    """One mesh with its material, shading and model transform.
+
+    ``model_to_world`` is a 4×4 row-vector matrix (``P_world = [P, 1] @ M``) built from
+    the scene's scale, rotate and translate as ``S·Rx·Ry·Rz·T``.
+    """
+
+    mesh: Mesh
+    material: Material = field(default_factory=Material)
+    shading: str = "flat"
+    model_to_world: np.ndarray = field(default_factory=lambda: np.eye(4))
+    name: str = "object"
+
+    def world_bounds(self) -> np.ndarray:
+        """World bounds as VTK's ``vtkProp3D::GetBounds`` gives them.
+
+        The eight corners of the mesh's model-space bounding box are transformed and
+        their extent taken, so a rotated object's bounds are larger than its points'.
+        Order (xmin, xmax, ymin, ymax, zmin, zmax).
+        """
+        b = self.mesh.bounds()
+        corners = np.array([[b[i], b[2 + j], b[4 + k], 1.0] for k in (0, 1) for j in (0, 1) for i in (0, 1)])
+        w = corners @ self.model_to_world
+        w = w[:, :3] / w[:, 3:]
+        lo, hi = w.min(axis=0), w.max(axis=0)
+        return np.array([lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]])
+
+
+@dataclass(frozen=True, eq=False)
+class Scene:
+    """Everything needed to draw one image. ``source`` names where it came from."""
+
+    image: Image
+    camera: Camera
+    lights: tuple[Light, ...]
+    objects: tuple[SceneObject, ...]
+    source: str = "<scene>"
+
+    def world_bounds(self) -> np.ndarray:
+        """Union of the objects' :meth:`SceneObject.world_bounds` (VTK's visible-prop bounds)."""
+        if not self.objects:
+            return np.array([-1.0, 1.0, -1.0, 1.0, -1.0, 1.0])
+        b = np.array([o.world_bounds() for o in self.objects])
+        return np.array([b[:, 0].min(), b[:, 1].max(), b[:, 2].min(), b[:, 3].max(), b[:, 4].min(), b[:, 5].max()])
+
+    def with_overrides(self, shading: str | None = None, size: tuple[int, int] | None = None) -> "Scene":
+        """A copy with every object's shading and/or the image size replaced."""
+        scene = self
+        if shading is not None:
+            objs = tuple(replace(o, shading=shading) for o in scene.objects)
+            scene = replace(scene, objects=objs)
+        if size is not None:
+            scene = replace(scene, image=replace(scene.image, size=tuple(size)))
+        return scene
+
+
+def headlight() -> Light:
+    """The single headlight VTK creates when a scene has no lights."""
+    return Light(kind="headlight")

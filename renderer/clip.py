@@ -1,0 +1,124 @@
+"""Stage 4, clip space → clip space: triangles cut at the near and far planes.
+
+A point (x, y, z, w) in OpenGL clip space is kept when −w ≤ z ≤ w (near, far). Clipping
+happens *before* the division by w, in homogeneous coordinates, so a triangle that
+crosses the near plane keeps the part in front of the eye and nothing behind the eye can
+appear (the course's reason for clipping in 4D). The x and y planes are clipped only at a
+wide guard band (|x|, |y| ≤ GUARD·w) that keeps window coordinates small enough for exact
+fixed-point rasterisation; inside the viewport that changes no pixel.
+
+Each output vertex carries its barycentric weights with respect to the *source*
+triangle, so later stages interpolate the source's attributes (Sutherland–Hodgman
+polygon clipping; the clipped polygon is re-triangulated as a fan).
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+GUARD = 8.0
+N_PLANES = 6
+MAX_POLY = 3 + N_PLANES  # each plane adds at most one vertex to a convex polygon
+
+
+@njit(cache=True)
+def plane_distance(v, plane):
+    """Signed distance-like value of clip-space vertex ``v`` to a plane; ≥ 0 is inside.
+
+    Planes: 0 near z ≥ −w, 1 far z ≤ w, 2..5 the guard band on x and y.
+    """
+    x, y, z, w = v[0], v[1], v[2], v[3]
+    if plane == 0:
+        return z + w
+    if plane == 1:
+        return w - z
+    if plane == 2:
+        return GUARD * w - x
+    if plane == 3:
+        return GUARD * w + x
+    if plane == 4:
+        return GUARD * w - y
+    return GUARD * w + y
+
+
+@njit(cache=True)
+def clip_polygon(poly, bary, n, plane, out_poly, out_bary):
+    """One Sutherland–Hodgman pass: clip the n-gon ``poly`` against ``plane``.
+
+    Returns the vertex count of the result, written to ``out_poly``/``out_bary``.
+    """
+    m = 0
+    for i in range(n):
+        j = (i + 1) % n
+        di = plane_distance(poly[i], plane)
+        dj = plane_distance(poly[j], plane)
+        if di >= 0.0:
+            out_poly[m] = poly[i]
+            out_bary[m] = bary[i]
+            m += 1
+        if (di >= 0.0) != (dj >= 0.0):
+            t = di / (di - dj)
+            out_poly[m] = poly[i] + t * (poly[j] - poly[i])
+            out_bary[m] = bary[i] + t * (bary[j] - bary[i])
+            m += 1
+    return m
+
+
+@njit(cache=True)
+def clip_triangles(tri_clip):
+    """Clip (T, 3, 4) clip-space triangles; returns the pieces that remain.
+
+    Returns
+    -------
+    out_clip : (K, 3, 4) clip-space vertices of the kept triangles, in source order.
+    out_bary : (K, 3, 3) each vertex's barycentric weights in its source triangle.
+    out_source : (K,) index of the source triangle.
+    """
+    t_count = tri_clip.shape[0]
+    cap = t_count + 16
+    out_clip = np.empty((cap, 3, 4))
+    out_bary = np.empty((cap, 3, 3))
+    out_source = np.empty(cap, np.int64)
+    poly = np.empty((MAX_POLY, 4))
+    bary = np.empty((MAX_POLY, 3))
+    tmp_poly = np.empty((MAX_POLY, 4))
+    tmp_bary = np.empty((MAX_POLY, 3))
+    k = 0
+    for t in range(t_count):
+        inside_all = True
+        for p in range(N_PLANES):
+            for v in range(3):
+                if plane_distance(tri_clip[t, v], p) < 0.0:
+                    inside_all = False
+        n = 3
+        for v in range(3):
+            poly[v] = tri_clip[t, v]
+            bary[v] = 0.0
+            bary[v, v] = 1.0
+        if not inside_all:
+            for p in range(N_PLANES):
+                n = clip_polygon(poly, bary, n, p, tmp_poly, tmp_bary)
+                poly[:n] = tmp_poly[:n]
+                bary[:n] = tmp_bary[:n]
+                if n < 3:
+                    break
+        if n < 3:
+            continue
+        if k + n - 2 > cap:  # grow the output
+            cap = 2 * cap + n
+            out_clip = _grow(out_clip, cap)
+            out_bary = _grow(out_bary, cap)
+            out_source = _grow(out_source, cap)
+        for i in range(1, n - 1):
+            out_clip[k, 0], out_clip[k, 1], out_clip[k, 2] = poly[0], poly[i], poly[i + 1]
+            out_bary[k, 0], out_bary[k, 1], out_bary[k, 2] = bary[0], bary[i], bary[i + 1]
+            out_source[k] = t
+            k += 1
+    return out_clip[:k], out_bary[:k], out_source[:k]
+
+
+@njit(cache=True)
+def _grow(a, cap):
+    b = np.empty((cap,) + a.shape[1:], a.dtype)
+    b[: a.shape[0]] = a
+    return b

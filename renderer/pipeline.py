@@ -1,0 +1,104 @@
+"""The whole pipeline, stage by stage: scene → :class:`lab.frame.Frame`.
+
+1. model → world (:mod:`renderer.transform`), 2. world → view and 3. view → clip
+(:mod:`renderer.camera`), 4. clipping (:mod:`renderer.clip`), 5. window mapping and
+sub-pixel snapping (:mod:`renderer.window`), 6. scanline fill with the top-left rule and
+the z-buffer (:mod:`renderer.raster`), 7. shading (:mod:`renderer.shading`,
+:mod:`renderer.lighting`), 8. 8-bit output with the flip to image rows.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from lab.frame import Frame
+from renderer.camera import clipping_range, view_to_clip, world_to_view
+from renderer.clip import clip_triangles
+from renderer.lighting import UNLIT, view_lights
+from renderer.raster import rasterize_triangles
+from renderer.shading import face_normals, shade, to_8bit
+from renderer.transform import normal_matrix, transform_points
+from renderer.window import clip_to_window, snap_to_subpixel, window_rows_to_image_rows
+
+
+@dataclass
+class SceneTriangles:
+    """Every object's triangles after stages 1–3, concatenated in draw order.
+
+    tri_view (T, 3, 3) view-space positions; tri_clip (T, 3, 4) clip-space positions;
+    tri_normal (T, 3, 3) view-space vertex normals, unnormalised (zeros when the object
+    has none); tri_object (T,) the object each triangle belongs to.
+    """
+
+    tri_view: np.ndarray
+    tri_clip: np.ndarray
+    tri_normal: np.ndarray
+    tri_object: np.ndarray
+
+
+def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray) -> SceneTriangles:
+    """Stages 1–3 for every object: model → world → view → clip, vertex by vertex."""
+    views, clips, normals, owners = [], [], [], []
+    for i, obj in enumerate(scene.objects):
+        model_to_view = obj.model_to_world @ world_to_view_m
+        verts_view = transform_points(obj.mesh.points, model_to_view)
+        verts_clip = verts_view @ view_to_clip_m
+        tris = obj.mesh.triangles
+        views.append(verts_view[tris, :3])
+        clips.append(verts_clip[tris])
+        if obj.mesh.point_normals is not None:
+            normals.append((obj.mesh.point_normals @ normal_matrix(model_to_view))[tris])
+        else:
+            normals.append(np.zeros((len(tris), 3, 3)))
+        owners.append(np.full(len(tris), i, np.int64))
+    return SceneTriangles(np.concatenate(views), np.concatenate(clips), np.concatenate(normals),
+                          np.concatenate(owners))
+
+
+def material_arrays(scene, complexity: int):
+    """Per-object arrays for the shading kernel: smooth flag, complexity, Ka·C, Kd·C, Ks·Cs, power."""
+    smooth, comp, amb, dif, spe, power = [], [], [], [], [], []
+    for obj in scene.objects:
+        m = obj.material
+        smooth.append(obj.shading != "flat" and obj.mesh.point_normals is not None)
+        comp.append(complexity if m.lighting else UNLIT)
+        amb.append(m.ambient * np.asarray(m.color))
+        dif.append(m.diffuse * np.asarray(m.color))
+        spe.append(m.specular * np.asarray(m.effective_specular_color))
+        power.append(m.specular_power)
+    return (np.array(smooth, np.bool_), np.array(comp, np.int64), np.array(amb), np.array(dif), np.array(spe),
+            np.array(power, np.float64))
+
+
+def render(scene) -> Frame:
+    """Draw ``scene`` with scanlab's own pipeline.
+
+    Returns a :class:`lab.frame.Frame`: ``rgb`` (H, W, 3) uint8 with row 0 at the top,
+    ``depth`` window depth (1.0 where empty), ``coverage``.
+
+    Examples
+    --------
+    >>> from lab import load_scene
+    >>> render(load_scene("cube")).rgb.shape
+    (384, 512, 3)
+    """
+    width, height = scene.image.size
+    cam = scene.camera
+    w2v = world_to_view(cam)
+    v2c = view_to_clip(cam, width / height, clipping_range(cam, scene.world_bounds()))
+    tris = transform_scene(scene, w2v, v2c)
+
+    clip_v, clip_bary, clip_source = clip_triangles(tris.tri_clip)
+    verts_window = clip_to_window(clip_v, width, height)
+    depth, tri_index, bary, front = rasterize_triangles(snap_to_subpixel(verts_window), verts_window, width, height)
+
+    lights = view_lights(scene.lights, cam, w2v)
+    smooth, comp, amb, dif, spe, power = material_arrays(scene, lights.complexity)
+    rgb = np.empty((height, width, 3))
+    shade(tri_index, bary, front, np.ascontiguousarray(clip_v[:, :, 3]), clip_bary, clip_source, tris.tri_view,
+          tris.tri_normal, face_normals(tris.tri_view), tris.tri_object, smooth, comp, amb, dif, spe, power,
+          bool(cam.parallel), lights.direction, lights.position, lights.colour, lights.positional,
+          lights.cos_cone, lights.exponent, lights.attenuation, np.asarray(scene.image.background, np.float64), rgb)
+    return Frame(rgb=window_rows_to_image_rows(to_8bit(rgb)), depth=window_rows_to_image_rows(depth),
+                 coverage=window_rows_to_image_rows(tri_index >= 0))

@@ -1,0 +1,137 @@
+"""Stage 6, window space → fragments: scanline fill, the top-left rule and the z-buffer.
+
+Input: triangles in window space (y up), x and y also snapped to the 1/256-pixel grid
+(:func:`renderer.window.snap_to_subpixel`: pixel centre (i, j) at fixed (256·i, 256·j)).
+Output: a visibility buffer — for each pixel the depth, the index of the nearest triangle
+and its screen-space barycentric weights — which :mod:`renderer.shading` lights.
+
+Rules, each in one place:
+
+- **Front face** (:func:`signed_area_fixed`): counter-clockwise in window coordinates
+  (y up), OpenGL's default. Nothing is culled; back faces are drawn and lit two-sided.
+- **Scanline fill** (:func:`scanline_span`): for each pixel row, the span of pixel
+  centres between the triangle's edges at the row's centre height. Coverage is decided
+  exactly, in integers, on the snapped vertices.
+- **Top-left rule** (:func:`scanline_span`): a pixel centre lying exactly on an edge
+  belongs to the triangle when the edge is a *left* edge or a *bottom* edge in window
+  coordinates (y up) — a top-left rule in image coordinates (y down). So two triangles
+  sharing an edge never both draw, and never both miss, a pixel on it.
+- **Depth** (:func:`rasterize`): window z interpolated linearly in screen space (it is
+  affine there), rounded to the 24-bit depth buffer, test LEQUAL (a later triangle at
+  equal depth wins), cleared to 1.0.
+
+Determinism: triangles are drawn serially, in the order given (objects in scene order,
+triangles in mesh order), as OpenGL guarantees; ties resolve the same way every run.
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from renderer.window import SUBPIXEL
+
+DEPTH_BITS = 24
+DEPTH_MAX = float((1 << DEPTH_BITS) - 1)
+
+
+@njit(cache=True)
+def ceil_div(a, b):
+    """⌈a / b⌉ for integers, b > 0."""
+    return -((-a) // b)
+
+
+@njit(cache=True)
+def signed_area_fixed(f):
+    """Twice the signed area of a fixed-point triangle (3, 2); > 0 = counter-clockwise (front)."""
+    return (f[1, 0] - f[0, 0]) * (f[2, 1] - f[0, 1]) - (f[2, 0] - f[0, 0]) * (f[1, 1] - f[0, 1])
+
+
+@njit(cache=True)
+def scanline_span(f, row):
+    """Columns [first, last] of the pixel centres inside a CCW fixed-point triangle on ``row``.
+
+    The edge function of an edge a→b, ``E(P) = dx·(Y − ya) − dy·(X − xa)``, is positive
+    left of the edge, inside a counter-clockwise triangle. On a scanline each edge bounds
+    X on one side: a left edge (dy < 0) from below, a right edge (dy > 0) from above; a
+    horizontal edge keeps or drops the whole row. A centre with E = 0 counts only for a
+    left edge (dy < 0) or a bottom edge (dy = 0, dx > 0) — the top-left rule.
+    Returns first > last when the row is empty.
+    """
+    y = row * SUBPIXEL
+    first = -(1 << 62)
+    last = 1 << 62
+    for e in range(3):
+        xa, ya = f[e, 0], f[e, 1]
+        xb, yb = f[(e + 1) % 3, 0], f[(e + 1) % 3, 1]
+        dx, dy = xb - xa, yb - ya
+        if dy < 0:  # left edge: E ≥ 0  ⇔  X ≥ (|dy|·xa − dx·(Y − ya)) / |dy|
+            first = max(first, ceil_div(-dy * xa - dx * (y - ya), -dy * SUBPIXEL))
+        elif dy > 0:  # right edge: E > 0  ⇔  X < (dy·xa + dx·(Y − ya)) / dy
+            last = min(last, ceil_div(dy * xa + dx * (y - ya), dy * SUBPIXEL) - 1)
+        else:  # horizontal: bottom edge (dx > 0) owns its centres, top edge does not
+            e_val = dx * (y - ya)
+            if e_val < 0 or (e_val == 0 and dx <= 0):
+                return 1, 0
+    return first, last
+
+
+@njit(cache=True)
+def rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, front):
+    """Scan-convert every triangle into the visibility buffer (the loop kernel).
+
+    tri_fixed : (K, 3, 2) int64 snapped x, y. tri_window : (K, 3, 3) float window x, y, z.
+    depth : (H, W) float, in/out. tri_index : (H, W) int64, in/out (−1 = empty).
+    bary : (H, W, 2) float, out: screen-space weights of vertices 1 and 2 at the pixel
+    centre. front : (K,) bool, out. Rows are window rows (y up).
+    """
+    f = np.empty((3, 2), np.int64)
+    for k in range(tri_fixed.shape[0]):
+        f[:] = tri_fixed[k]
+        area = signed_area_fixed(f)
+        front[k] = area > 0
+        if area == 0:
+            continue
+        if area < 0:  # orient counter-clockwise for the span test; weights keep source order
+            f[1], f[2] = tri_fixed[k, 2], tri_fixed[k, 1]
+        x0, y0, z0 = tri_window[k, 0, 0], tri_window[k, 0, 1], tri_window[k, 0, 2]
+        e1x, e1y, dz1 = tri_window[k, 1, 0] - x0, tri_window[k, 1, 1] - y0, tri_window[k, 1, 2] - z0
+        e2x, e2y, dz2 = tri_window[k, 2, 0] - x0, tri_window[k, 2, 1] - y0, tri_window[k, 2, 2] - z0
+        a2 = e1x * e2y - e2x * e1y
+        if a2 == 0.0:
+            continue
+        row0 = max(0, ceil_div(min(f[0, 1], f[1, 1], f[2, 1]), SUBPIXEL))
+        row1 = min(height - 1, max(f[0, 1], f[1, 1], f[2, 1]) // SUBPIXEL)
+        for row in range(row0, row1 + 1):
+            first, last = scanline_span(f, row)
+            first = max(first, 0)
+            last = min(last, width - 1)
+            py = row + 0.5 - y0
+            for col in range(first, last + 1):
+                px = col + 0.5 - x0
+                l1 = (px * e2y - e2x * py) / a2
+                l2 = (e1x * py - px * e1y) / a2
+                z = z0 + l1 * dz1 + l2 * dz2
+                z = np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5) / DEPTH_MAX
+                if z <= depth[row, col]:
+                    depth[row, col] = z
+                    tri_index[row, col] = k
+                    bary[row, col, 0] = l1
+                    bary[row, col, 1] = l2
+
+
+def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int):
+    """Allocate the visibility buffer and fill it (the Python wrapper).
+
+    Returns ``depth`` (H, W), ``tri_index`` (H, W), ``bary`` (H, W, 2) in window rows
+    (y up) and ``front`` (K,) per triangle.
+    """
+    tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
+    tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
+    if len(tri_fixed) != len(tri_window):
+        raise ValueError("tri_fixed and tri_window must hold the same triangles")
+    depth = np.ones((height, width))
+    tri_index = np.full((height, width), -1, np.int64)
+    bary = np.zeros((height, width, 2))
+    front = np.zeros(len(tri_fixed), np.bool_)
+    rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, front)
+    return depth, tri_index, bary, front
