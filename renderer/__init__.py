@@ -6,6 +6,6 @@ Entry point: :func:`render`. Stages, in order: :mod:`~renderer.transform`,
 :mod:`~renderer.raster`, :mod:`~renderer.shading` (with :mod:`~renderer.lighting`),
 assembled in :mod:`~renderer.pipeline`.
 """
-from renderer.pipeline import render
+from renderer.pipeline import RenderOptions, render
 
-__all__ = ["render"]
+__all__ = ["RenderOptions", "render"]

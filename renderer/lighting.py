@@ -5,7 +5,7 @@ are linear 0..1 RGB. Which formula runs depends on the whole *set* of lights, as
 VTK's OpenGL2 mapper ("light complexity"):
 
 0. no light switched on, or the object's lighting off: ``Amb + Dif`` (unlit);
-1. exactly one light on, a headlight of intensity 1: ``df = max(1e-6, n.z)``,
+1. exactly one light on and it is a headlight (of any intensity — measured): ``df = max(1e-6, n.z)``,
    ``sf = df^p`` (a fixed half-vector (0, 0, 1)), ``Amb + df·Dif·Lc + sf·Spe·Lc``;
 2. otherwise, no positional light: per light ``df = max(0, n·(−l))``,
    ``sf = sign(df)·max(1e-5, reflect(l, n)·v)^p`` (Phong's reflection vector);
@@ -35,7 +35,9 @@ def light_complexity(lights) -> int:
         if light.on:
             n_on += 1
             complexity = max(complexity, HEADLIGHT_ONLY)
-        if complexity == HEADLIGHT_ONLY and (n_on > 1 or light.intensity != 1.0 or light.kind != "headlight"):
+        # A lone headlight keeps the simple formula whatever its intensity (measured
+        # against VTK 9.7: headlight-dimmed preset).
+        if complexity == HEADLIGHT_ONLY and (n_on > 1 or light.kind != "headlight"):
             complexity = DIRECTIONAL
         if complexity < POSITIONAL and light.positional:
             return POSITIONAL

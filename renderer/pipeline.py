@@ -22,6 +22,19 @@ from renderer.transform import normal_matrix, transform_points
 from renderer.window import clip_to_window, snap_to_subpixel, window_rows_to_image_rows
 
 
+@dataclass(frozen=True)
+class RenderOptions:
+    """Choices a lesson can change; the defaults are what VTK does.
+
+    fill_rule : "top-left" (OpenGL/llvmpipe) or "bottom-right" (deliberately wrong).
+    interpolation : "perspective" (correct, GPUs) or "screen" (linear in screen space,
+        as the course's scanline slides do), for positions and normals.
+    """
+
+    fill_rule: str = "top-left"
+    interpolation: str = "perspective"
+
+
 @dataclass
 class SceneTriangles:
     """Every object's triangles after stages 1–3, concatenated in draw order.
@@ -71,7 +84,7 @@ def material_arrays(scene, complexity: int):
             np.array(power, np.float64))
 
 
-def render(scene) -> Frame:
+def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     """Draw ``scene`` with scanlab's own pipeline.
 
     Returns a :class:`lab.frame.Frame`: ``rgb`` (H, W, 3) uint8 with row 0 at the top,
@@ -91,14 +104,15 @@ def render(scene) -> Frame:
 
     clip_v, clip_bary, clip_source = clip_triangles(tris.tri_clip)
     verts_window = clip_to_window(clip_v, width, height)
-    depth, tri_index, bary, front = rasterize_triangles(snap_to_subpixel(verts_window), verts_window, width, height)
+    depth, tri_index, bary, front = rasterize_triangles(snap_to_subpixel(verts_window), verts_window, width, height,
+                                                     options.fill_rule)
 
     lights = view_lights(scene.lights, cam, w2v)
     smooth, comp, amb, dif, spe, power = material_arrays(scene, lights.complexity)
     rgb = np.empty((height, width, 3))
     shade(tri_index, bary, front, np.ascontiguousarray(clip_v[:, :, 3]), clip_bary, clip_source, tris.tri_view,
           tris.tri_normal, face_normals(tris.tri_view), tris.tri_object, smooth, comp, amb, dif, spe, power,
-          bool(cam.parallel), lights.direction, lights.position, lights.colour, lights.positional,
+          bool(cam.parallel), options.interpolation == "perspective", lights.direction, lights.position, lights.colour, lights.positional,
           lights.cos_cone, lights.exponent, lights.attenuation, np.asarray(scene.image.background, np.float64), rgb)
     return Frame(rgb=window_rows_to_image_rows(to_8bit(rgb)), depth=window_rows_to_image_rows(depth),
                  coverage=window_rows_to_image_rows(tri_index >= 0))

@@ -30,6 +30,9 @@ from numba import njit
 
 from renderer.window import SUBPIXEL
 
+TOP_LEFT, BOTTOM_RIGHT = 0, 1  # fill rules; BOTTOM_RIGHT exists to show what a wrong rule does
+FILL_RULES = {"top-left": TOP_LEFT, "bottom-right": BOTTOM_RIGHT}
+
 DEPTH_BITS = 24
 DEPTH_MAX = float((1 << DEPTH_BITS) - 1)
 
@@ -47,7 +50,7 @@ def signed_area_fixed(f):
 
 
 @njit(cache=True)
-def scanline_span(f, row):
+def scanline_span(f, row, rule=TOP_LEFT):
     """Columns [first, last] of the pixel centres inside a CCW fixed-point triangle on ``row``.
 
     The edge function of an edge a→b, ``E(P) = dx·(Y − ya) − dy·(X − xa)``, is positive
@@ -55,7 +58,8 @@ def scanline_span(f, row):
     X on one side: a left edge (dy < 0) from below, a right edge (dy > 0) from above; a
     horizontal edge keeps or drops the whole row. A centre with E = 0 counts only for a
     left edge (dy < 0) or a bottom edge (dy = 0, dx > 0) — the top-left rule.
-    Returns first > last when the row is empty.
+    ``rule = BOTTOM_RIGHT`` hands the tie to the opposite edges (right and top), the
+    deliberately wrong rule of the parity tests. Returns first > last when the row is empty.
     """
     y = row * SUBPIXEL
     first = -(1 << 62)
@@ -65,24 +69,28 @@ def scanline_span(f, row):
         xb, yb = f[(e + 1) % 3, 0], f[(e + 1) % 3, 1]
         dx, dy = xb - xa, yb - ya
         if dy < 0:  # left edge: E ≥ 0  ⇔  X ≥ (|dy|·xa − dx·(Y − ya)) / |dy|
-            first = max(first, ceil_div(-dy * xa - dx * (y - ya), -dy * SUBPIXEL))
+            num, den = -dy * xa - dx * (y - ya), -dy * SUBPIXEL
+            first = max(first, ceil_div(num, den) if rule == TOP_LEFT else num // den + 1)
         elif dy > 0:  # right edge: E > 0  ⇔  X < (dy·xa + dx·(Y − ya)) / dy
-            last = min(last, ceil_div(dy * xa + dx * (y - ya), dy * SUBPIXEL) - 1)
+            num, den = dy * xa + dx * (y - ya), dy * SUBPIXEL
+            last = min(last, ceil_div(num, den) - 1 if rule == TOP_LEFT else num // den)
         else:  # horizontal: bottom edge (dx > 0) owns its centres, top edge does not
             e_val = dx * (y - ya)
-            if e_val < 0 or (e_val == 0 and dx <= 0):
+            owned = dx > 0 if rule == TOP_LEFT else dx < 0
+            if e_val < 0 or (e_val == 0 and not owned):
                 return 1, 0
     return first, last
 
 
 @njit(cache=True)
-def rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, front):
+def rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, front, rule):
     """Scan-convert every triangle into the visibility buffer (the loop kernel).
 
     tri_fixed : (K, 3, 2) int64 snapped x, y. tri_window : (K, 3, 3) float window x, y, z.
     depth : (H, W) float, in/out. tri_index : (H, W) int64, in/out (−1 = empty).
     bary : (H, W, 2) float, out: screen-space weights of vertices 1 and 2 at the pixel
-    centre. front : (K,) bool, out. Rows are window rows (y up).
+    centre. front : (K,) bool, out. rule : fill rule for ties (TOP_LEFT).
+    Rows are window rows (y up).
     """
     f = np.empty((3, 2), np.int64)
     for k in range(tri_fixed.shape[0]):
@@ -102,7 +110,7 @@ def rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, fron
         row0 = max(0, ceil_div(min(f[0, 1], f[1, 1], f[2, 1]), SUBPIXEL))
         row1 = min(height - 1, max(f[0, 1], f[1, 1], f[2, 1]) // SUBPIXEL)
         for row in range(row0, row1 + 1):
-            first, last = scanline_span(f, row)
+            first, last = scanline_span(f, row, rule)
             first = max(first, 0)
             last = min(last, width - 1)
             py = row + 0.5 - y0
@@ -119,7 +127,8 @@ def rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, fron
                     bary[row, col, 1] = l2
 
 
-def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int):
+def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
+                        fill_rule: str = "top-left"):
     """Allocate the visibility buffer and fill it (the Python wrapper).
 
     Returns ``depth`` (H, W), ``tri_index`` (H, W), ``bary`` (H, W, 2) in window rows
@@ -133,5 +142,5 @@ def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: in
     tri_index = np.full((height, width), -1, np.int64)
     bary = np.zeros((height, width, 2))
     front = np.zeros(len(tri_fixed), np.bool_)
-    rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, front)
+    rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, front, FILL_RULES[fill_rule])
     return depth, tri_index, bary, front

@@ -23,15 +23,20 @@ from renderer.lighting import vtk_lighting
 
 
 @njit(cache=True)
-def fragment_weights(k, l1, l2, clip_w, clip_bary, out):
-    """Perspective-correct weights of the *source* triangle's vertices at a fragment.
+def fragment_weights(k, l1, l2, clip_w, clip_bary, perspective, out):
+    """Weights of the *source* triangle's vertices at a fragment.
 
-    ``l1, l2`` are screen-space weights of clipped triangle ``k``'s vertices 1 and 2;
-    each is divided by that vertex's clip w and the three renormalised, then mapped
-    through the clipped vertices' own weights in the source triangle.
+    ``l1, l2`` are screen-space weights of clipped triangle ``k``'s vertices 1 and 2.
+    Perspective-correct (what GPUs and VTK do): each is divided by that vertex's clip w
+    and the three renormalised. ``perspective=False`` keeps them screen-linear, as the
+    course's scanline slides interpolate. Then they are mapped through the clipped
+    vertices' own weights in the source triangle.
     """
     l0 = 1.0 - l1 - l2
-    b0, b1, b2 = l0 / clip_w[k, 0], l1 / clip_w[k, 1], l2 / clip_w[k, 2]
+    if perspective:
+        b0, b1, b2 = l0 / clip_w[k, 0], l1 / clip_w[k, 1], l2 / clip_w[k, 2]
+    else:
+        b0, b1, b2 = l0, l1, l2
     s = b0 + b1 + b2
     b0, b1, b2 = b0 / s, b1 / s, b2 / s
     for j in range(3):
@@ -40,7 +45,7 @@ def fragment_weights(k, l1, l2, clip_w, clip_bary, out):
 
 @njit(cache=True, parallel=True)
 def shade(tri_index, bary, front, clip_w, clip_bary, clip_source, tri_view, tri_normal, face_normal,
-          tri_object, obj_smooth, obj_complexity, obj_amb, obj_dif, obj_spe, obj_power, parallel_camera,
+          tri_object, obj_smooth, obj_complexity, obj_amb, obj_dif, obj_spe, obj_power, parallel_camera, perspective,
           l_dir, l_pos, l_col, l_positional, l_cos_cone, l_exponent, l_att, background, rgb):
     """Light every covered pixel (the loop kernel); rows are independent, so ``prange``
     over rows gives the same bytes as a serial loop."""
@@ -55,7 +60,7 @@ def shade(tri_index, bary, front, clip_w, clip_bary, clip_source, tri_view, tri_
             if k < 0:
                 rgb[row, col] = background
                 continue
-            fragment_weights(k, bary[row, col, 0], bary[row, col, 1], clip_w, clip_bary, w)
+            fragment_weights(k, bary[row, col, 0], bary[row, col, 1], clip_w, clip_bary, perspective, w)
             s = clip_source[k]
             o = tri_object[s]
             for c in range(3):

@@ -1,0 +1,150 @@
+"""Stage 4, clipping in homogeneous clip space: −w ≤ z ≤ w, nothing behind the eye, weights back to the source."""
+import numpy as np
+import pytest
+
+from lab.scene import Camera
+from renderer.camera import view_to_clip
+from renderer.clip import clip_triangles
+
+EPS = 1e-12
+NEAR, FAR = 1.0, 10.0
+PROJECTION = view_to_clip(Camera(view_angle=60.0), 1.0, (NEAR, FAR))
+
+
+def clip_view(*tris_view):
+    """Project view-space triangles with a 60° frustum (near 1, far 10) and clip them."""
+    tris = np.array(tris_view, dtype=np.float64)
+    clip = np.concatenate([tris, np.ones(tris.shape[:2] + (1,))], axis=2) @ PROJECTION
+    return clip, clip_triangles(np.ascontiguousarray(clip))
+
+
+def assert_weights_reproduce_sources(source_clip, out_clip, out_bary, out_source):
+    """Each output vertex is its barycentric weights times its source triangle's clip vertices."""
+    assert np.all(out_bary >= -EPS)
+    np.testing.assert_allclose(out_bary.sum(axis=2), 1.0, atol=1e-12)
+    for k in range(len(out_clip)):
+        np.testing.assert_allclose(out_bary[k] @ source_clip[out_source[k]], out_clip[k], atol=1e-12)
+
+
+def test_a_triangle_inside_the_frustum_is_kept_unchanged():
+    """All three vertices inside: one output triangle, the same vertices, identity barycentrics."""
+    clip, (out, bary, source) = clip_view([(0, 0, -2), (1, 0, -3), (0, 1, -4)])
+    assert len(out) == 1
+    np.testing.assert_array_equal(out[0], clip[0])
+    np.testing.assert_array_equal(bary[0], np.eye(3))
+    assert source.tolist() == [0]
+
+
+def test_a_triangle_in_front_of_the_near_plane_disappears():
+    """All three vertices between the eye and the near plane (z > −w): nothing remains."""
+    _, (out, _, _) = clip_view([(0, 0, -0.5), (0.1, 0, -0.5), (0, 0.1, -0.9)])
+    assert len(out) == 0
+
+
+def test_one_vertex_past_the_near_plane_leaves_a_quad():
+    """One vertex nearer than the near plane: the rest is a quad, two triangles, every vertex with z ≥ −w."""
+    clip, (out, bary, source) = clip_view([(0, 0, -0.5), (1, 0, -3), (0, 1, -3)])
+    assert len(out) == 2
+    assert source.tolist() == [0, 0]
+    assert np.all(out[..., 2] + out[..., 3] >= -EPS)
+    # two new vertices lie exactly on the near plane: z_view = −near, i.e. w = near
+    on_plane = np.isclose(out[..., 2] + out[..., 3], 0.0, atol=1e-12)
+    assert len({tuple(np.round(v, 12)) for v in out[on_plane]}) == 2
+    np.testing.assert_allclose(out[on_plane][:, 3], NEAR, atol=1e-12)
+    assert_weights_reproduce_sources(clip, out, bary, source)
+
+
+def test_two_vertices_past_the_near_plane_leave_one_triangle():
+    """Two vertices nearer than the near plane: one smaller triangle, every vertex with z ≥ −w."""
+    clip, (out, bary, source) = clip_view([(0, 0, -0.5), (1, 0, -0.5), (0, 1, -3)])
+    assert len(out) == 1
+    assert np.all(out[..., 2] + out[..., 3] >= -EPS)
+    assert sorted(np.round(out[0, :, 3], 12).tolist()) == [NEAR, NEAR, 3.0]
+    assert_weights_reproduce_sources(clip, out, bary, source)
+
+
+def test_clipped_weights_by_hand():
+    """Edge from z_view = −0.5 to −3 crosses z_view = −1 one fifth of the way: weights (0.8, 0.2, 0)."""
+    clip, (out, bary, source) = clip_view([(0, 0, -0.5), (1, 0, -3), (0, 1, -3)])
+    rows = {tuple(np.round(b, 12)) for b in bary.reshape(-1, 3)}
+    assert (0.8, 0.2, 0.0) in rows and (0.8, 0.0, 0.2) in rows
+    assert (1.0, 0.0, 0.0) not in rows  # the cut-off vertex is gone
+
+
+def test_nothing_behind_the_eye_survives():
+    """A triangle reaching behind the eye (w ≤ 0) keeps only points with w ≥ near > 0; one wholly behind vanishes."""
+    clip, (out, bary, source) = clip_view([(0, 0, 3), (2, 0, -5), (-2, 1, -6)],  # one vertex behind the eye
+                                          [(0, 0, 2), (1, 0, 3), (0, 1, 4)],      # all behind the eye
+                                          [(-1, 0, 4), (1, 0, 4), (0, 1, -5)])    # two behind the eye
+    assert np.any(clip[..., 3] <= 0)
+    assert set(source.tolist()) == {0, 2}
+    assert np.all(out[..., 3] >= NEAR - 1e-12)
+    assert_weights_reproduce_sources(clip, out, bary, source)
+
+
+def test_the_eye_plane_itself_is_not_kept():
+    """A vertex exactly at the eye (w = 0) is cut away: what is left has w ≥ near."""
+    clip, (out, _, _) = clip_view([(0, 0, 0), (1, 0, -4), (0, 1, -4)])
+    assert clip[0, 0, 3] == 0.0
+    assert len(out) == 2
+    assert np.all(out[..., 3] >= NEAR - 1e-12)
+
+
+def test_a_triangle_beyond_the_far_plane_disappears():
+    """All three vertices past the far plane (z > w): nothing remains."""
+    _, (out, _, _) = clip_view([(0, 0, -11), (1, 0, -12), (0, 1, -20)])
+    assert len(out) == 0
+
+
+def test_a_triangle_crossing_the_far_plane_is_cut_at_it():
+    """One vertex past the far plane: a quad remains, every vertex with z ≤ w, two on the plane at w = far."""
+    clip, (out, bary, source) = clip_view([(0, 0, -20), (1, 0, -5), (0, 1, -5)])
+    assert len(out) == 2
+    assert np.all(out[..., 3] - out[..., 2] >= -EPS)
+    on_plane = np.isclose(out[..., 3] - out[..., 2], 0.0, atol=1e-12)
+    np.testing.assert_allclose(out[on_plane][:, 3], FAR, atol=1e-12)
+    assert_weights_reproduce_sources(clip, out, bary, source)
+
+
+def test_a_triangle_spanning_both_planes_is_cut_at_both():
+    """Near and far cuts together: every vertex has −w ≤ z ≤ w and the weights still reproduce the source."""
+    clip, (out, bary, source) = clip_view([(0, 0, -0.2), (1, 0, -30), (0, 1, -5)])
+    assert len(out) >= 2
+    assert np.all(out[..., 2] + out[..., 3] >= -EPS)
+    assert np.all(out[..., 3] - out[..., 2] >= -EPS)
+    assert_weights_reproduce_sources(clip, out, bary, source)
+
+
+def test_output_keeps_source_order_and_winding():
+    """Pieces come out in source order, each wound like its source (same sign of the x-y area after division)."""
+    tris = [[(0, 0, -0.5), (1, 0, -3), (0, 1, -3)], [(0, 0, -2), (0, 1, -3), (1, 0, -4)], [(0, 0, -20), (1, 0, -5), (0, 1, -5)]]
+    clip, (out, _, source) = clip_view(*tris)
+    assert source.tolist() == sorted(source.tolist()) == [0, 0, 1, 2, 2]
+
+    def area(t):
+        p = t[:, :2] / t[:, 3:4]
+        return (p[1, 0] - p[0, 0]) * (p[2, 1] - p[0, 1]) - (p[2, 0] - p[0, 0]) * (p[1, 1] - p[0, 1])
+
+    for k, s in enumerate(source):
+        assert np.sign(area(out[k])) == np.sign(area(clip[s]))
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_random_triangles_clip_into_the_visible_volume(seed):
+    """Random triangles anywhere around the eye: every surviving vertex is inside −w ≤ z ≤ w, w > 0, with exact weights."""
+    rng = np.random.default_rng(seed)
+    anywhere = rng.uniform(-15, 15, (40, 3, 3))
+    in_view = np.concatenate([rng.uniform(-2, 2, (10, 3, 2)), rng.uniform(-9.5, -1.5, (10, 3, 1))], axis=2)
+    tris = rng.permutation(np.concatenate([anywhere, in_view]))
+    clip, (out, bary, source) = clip_view(*tris)
+    assert np.all(out[..., 2] + out[..., 3] >= -1e-9)
+    assert np.all(out[..., 3] - out[..., 2] >= -1e-9)
+    assert np.all(out[..., 3] > 0)
+    assert_weights_reproduce_sources(clip, out, bary, source)
+    # a triangle entirely inside is passed through whole
+    x, y, z, w = np.moveaxis(clip, 2, 0)
+    inside = np.all((z >= -w) & (z <= w) & (np.abs(x) <= 8 * w) & (np.abs(y) <= 8 * w), axis=1)
+    assert inside.any() and not inside.all()
+    for t in np.flatnonzero(inside):
+        assert (source == t).sum() == 1
+        np.testing.assert_array_equal(out[source == t][0], clip[t])
