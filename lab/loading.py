@@ -160,6 +160,8 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
                    specular_power=s.number("specular_power", 1.0, 0.0, 1000.0),
                    specular_color=s.colour("specular_color", None), opacity=s.number("opacity", 1.0, 0.0, 1.0),
                    lighting=s.flag("lighting", True))
+    if mat.opacity != 1.0:
+        raise s.error("opacity", f"{mat.opacity:g}: translucency is not drawn yet; only 1.0 is accepted")
     m = model_matrix(scale=s.vector("scale", (1.0, 1.0, 1.0)), rotate=s.vector("rotate", (0.0, 0.0, 0.0)),
                      translate=s.vector("translate", (0.0, 0.0, 0.0)))
     if abs(np.linalg.det(m[:3, :3])) < 1e-300:

@@ -65,8 +65,8 @@ def clip_polygon(poly, bary, n, plane, out_poly, out_bary):
 
 
 @njit(cache=True)
-def clip_triangles(tri_clip):
-    """Clip (T, 3, 4) clip-space triangles; returns the pieces that remain.
+def clip_triangles(verts_clip, triangles):
+    """Clip triangles given as (N, 4) clip-space vertices and (T, 3) vertex indices.
 
     Returns
     -------
@@ -74,7 +74,7 @@ def clip_triangles(tri_clip):
     out_bary : (K, 3, 3) each vertex's barycentric weights in its source triangle.
     out_source : (K,) index of the source triangle.
     """
-    t_count = tri_clip.shape[0]
+    t_count = triangles.shape[0]
     cap = t_count + 16
     out_clip = np.empty((cap, 3, 4))
     out_bary = np.empty((cap, 3, 3))
@@ -85,16 +85,17 @@ def clip_triangles(tri_clip):
     tmp_bary = np.empty((MAX_POLY, 3))
     k = 0
     for t in range(t_count):
-        inside_all = True
-        for p in range(N_PLANES):
-            for v in range(3):
-                if plane_distance(tri_clip[t, v], p) < 0.0:
-                    inside_all = False
         n = 3
         for v in range(3):
-            poly[v] = tri_clip[t, v]
-            bary[v] = 0.0
-            bary[v, v] = 1.0
+            for c in range(4):
+                poly[v, c] = verts_clip[triangles[t, v], c]
+            for c in range(3):
+                bary[v, c] = 1.0 if c == v else 0.0
+        inside_all = True
+        for v in range(3):
+            for p in range(N_PLANES):
+                if plane_distance(poly[v], p) < 0.0:
+                    inside_all = False
         if not inside_all:
             for p in range(N_PLANES):
                 n = clip_polygon(poly, bary, n, p, tmp_poly, tmp_bary)
@@ -110,8 +111,10 @@ def clip_triangles(tri_clip):
             out_bary = _grow(out_bary, cap)
             out_source = _grow(out_source, cap)
         for i in range(1, n - 1):
-            out_clip[k, 0], out_clip[k, 1], out_clip[k, 2] = poly[0], poly[i], poly[i + 1]
-            out_bary[k, 0], out_bary[k, 1], out_bary[k, 2] = bary[0], bary[i], bary[i + 1]
+            for c in range(4):
+                out_clip[k, 0, c], out_clip[k, 1, c], out_clip[k, 2, c] = poly[0, c], poly[i, c], poly[i + 1, c]
+            for c in range(3):
+                out_bary[k, 0, c], out_bary[k, 1, c], out_bary[k, 2, c] = bary[0, c], bary[i, c], bary[i + 1, c]
             out_source[k] = t
             k += 1
     return out_clip[:k], out_bary[:k], out_source[:k]

@@ -105,55 +105,56 @@ def view_lights(lights, camera, world_to_view: np.ndarray) -> ViewLights:
     return ViewLights(complexity=light_complexity(lights), **out)
 
 
-@njit(cache=True)
-def reflect(i, n):
-    """GLSL reflect: i − 2·(n·i)·n."""
-    return i - 2.0 * (n[0] * i[0] + n[1] * i[1] + n[2] * i[2]) * n
+@njit(cache=True, inline="always")
+def reflect_dot(lx, ly, lz, n, vx, vy, vz):
+    """reflect(l, n)·v with GLSL's reflect(l, n) = l − 2·(n·l)·n, in scalars."""
+    k = 2.0 * (n[0] * lx + n[1] * ly + n[2] * lz)
+    return (lx - k * n[0]) * vx + (ly - k * n[1]) * vy + (lz - k * n[2]) * vz
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def vtk_lighting(n, p, complexity, amb, dif, spe, power,
                  l_dir, l_pos, l_col, l_positional, l_cos_cone, l_exponent, l_att, out):
-    """VTK's colour at one fragment (the scalar kernel); writes RGB into ``out``.
+    """VTK's colour at one fragment (the scalar kernel); writes linear RGB into ``out``.
 
-    n : unit normal facing the viewer's side (view space). p : fragment position
-    (view space). amb, dif, spe : Ka·Ca, Kd·Cd, Ks·Cs. power : specular power.
+    n : unit normal on the viewer's side (view space). p : fragment position (view
+    space). amb, dif, spe : Ka·Ca, Kd·Cd, Ks·Cs (linear RGB). power : specular power.
+    Lights as in :class:`ViewLights`. Written with scalars only: it runs per pixel.
     """
-    if complexity == 0:
+    if complexity == UNLIT:
         for c in range(3):
             out[c] = amb[c] + dif[c]
         return
-    if complexity == 1:
+    if complexity == HEADLIGHT_ONLY:
         df = max(1e-6, n[2])
         sf = df ** power
         for c in range(3):
             out[c] = amb[c] + df * dif[c] * l_col[0, c] + sf * spe[c] * l_col[0, c]
         return
     plen = math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
-    v = -p / plen if plen > 0.0 else np.array([0.0, 0.0, 1.0])
-    diffuse = np.zeros(3)
-    specular = np.zeros(3)
+    vx, vy, vz = (-p[0] / plen, -p[1] / plen, -p[2] / plen) if plen > 0.0 else (0.0, 0.0, 1.0)
+    d0 = d1 = d2 = 0.0  # Σ df·Lc
+    s0 = s1 = s2 = 0.0  # Σ sf·Lc
     for i in range(l_dir.shape[0]):
         att = 1.0
-        if complexity == 3 and l_positional[i]:
-            lv = p - l_pos[i]
-            dist = math.sqrt(lv[0] * lv[0] + lv[1] * lv[1] + lv[2] * lv[2])
-            lv = lv / dist
+        lx, ly, lz = l_dir[i, 0], l_dir[i, 1], l_dir[i, 2]
+        if complexity == POSITIONAL and l_positional[i]:
+            lx, ly, lz = p[0] - l_pos[i, 0], p[1] - l_pos[i, 1], p[2] - l_pos[i, 2]
+            dist = math.sqrt(lx * lx + ly * ly + lz * lz)
+            lx, ly, lz = lx / dist, ly / dist, lz / dist
             att = 1.0 / (l_att[i, 0] + l_att[i, 1] * dist + l_att[i, 2] * dist * dist)
-            if l_cos_cone[i] > -1.5:
-                cd = lv[0] * l_dir[i, 0] + lv[1] * l_dir[i, 1] + lv[2] * l_dir[i, 2]
-                if cd >= l_cos_cone[i]:
-                    att *= cd ** l_exponent[i]
-                else:
-                    att = 0.0
-        else:
-            lv = l_dir[i].copy()
-        df = max(0.0, att * -(n[0] * lv[0] + n[1] * lv[1] + n[2] * lv[2]))
-        r = reflect(lv, n)
-        rv = max(1e-5, r[0] * v[0] + r[1] * v[1] + r[2] * v[2])
-        sf = (1.0 if df > 0.0 else 0.0) * att * rv ** power
-        for c in range(3):
-            diffuse[c] += df * l_col[i, c]
-            specular[c] += sf * l_col[i, c]
-    for c in range(3):
-        out[c] = amb[c] + dif[c] * diffuse[c] + spe[c] * specular[c]
+            if l_cos_cone[i] > -1.5:  # a spot: cut off outside the cone, cos^exponent inside
+                cd = lx * l_dir[i, 0] + ly * l_dir[i, 1] + lz * l_dir[i, 2]
+                att = att * cd ** l_exponent[i] if cd >= l_cos_cone[i] else 0.0
+        df = max(0.0, -att * (n[0] * lx + n[1] * ly + n[2] * lz))
+        if df > 0.0:
+            sf = att * max(1e-5, reflect_dot(lx, ly, lz, n, vx, vy, vz)) ** power
+            d0 += df * l_col[i, 0]
+            d1 += df * l_col[i, 1]
+            d2 += df * l_col[i, 2]
+            s0 += sf * l_col[i, 0]
+            s1 += sf * l_col[i, 1]
+            s2 += sf * l_col[i, 2]
+    out[0] = amb[0] + dif[0] * d0 + spe[0] * s0
+    out[1] = amb[1] + dif[1] * d1 + spe[1] * s1
+    out[2] = amb[2] + dif[2] * d2 + spe[2] * s2

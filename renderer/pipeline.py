@@ -17,9 +17,9 @@ from renderer.camera import clipping_range, view_to_clip, world_to_view
 from renderer.clip import clip_triangles
 from renderer.lighting import UNLIT, view_lights
 from renderer.raster import rasterize_triangles
-from renderer.shading import face_normals, shade, to_8bit
+from renderer.shading import shade, to_8bit
 from renderer.transform import normal_matrix, transform_points
-from renderer.window import clip_to_window, snap_to_subpixel, window_rows_to_image_rows
+from renderer.window import clip_to_window, window_rows_to_image_rows
 
 
 @dataclass(frozen=True)
@@ -36,37 +36,39 @@ class RenderOptions:
 
 
 @dataclass
-class SceneTriangles:
-    """Every object's triangles after stages 1–3, concatenated in draw order.
+class SceneGeometry:
+    """Every object's vertices after stages 1–3 and its triangles, concatenated in draw order.
 
-    tri_view (T, 3, 3) view-space positions; tri_clip (T, 3, 4) clip-space positions;
-    tri_normal (T, 3, 3) view-space vertex normals, unnormalised (zeros when the object
-    has none); tri_object (T,) the object each triangle belongs to.
+    verts_view (N, 3) view-space positions; verts_clip (N, 4) clip-space positions;
+    normals_view (N, 3) view-space vertex normals, unnormalised (zeros when the object has
+    none); triangles (T, 3) indices into those rows; tri_object (T,) each triangle's object.
     """
 
-    tri_view: np.ndarray
-    tri_clip: np.ndarray
-    tri_normal: np.ndarray
+    verts_view: np.ndarray
+    verts_clip: np.ndarray
+    normals_view: np.ndarray
+    triangles: np.ndarray
     tri_object: np.ndarray
 
 
-def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray) -> SceneTriangles:
+def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray) -> SceneGeometry:
     """Stages 1–3 for every object: model → world → view → clip, vertex by vertex."""
-    views, clips, normals, owners = [], [], [], []
+    views, clips, normals, tris, owners = [], [], [], [], []
+    offset = 0
     for i, obj in enumerate(scene.objects):
         model_to_view = obj.model_to_world @ world_to_view_m
         verts_view = transform_points(obj.mesh.points, model_to_view)
-        verts_clip = verts_view @ view_to_clip_m
-        tris = obj.mesh.triangles
-        views.append(verts_view[tris, :3])
-        clips.append(verts_clip[tris])
+        views.append(verts_view[:, :3])
+        clips.append(verts_view @ view_to_clip_m)
         if obj.mesh.point_normals is not None:
-            normals.append((obj.mesh.point_normals @ normal_matrix(model_to_view))[tris])
+            normals.append(obj.mesh.point_normals @ normal_matrix(model_to_view))
         else:
-            normals.append(np.zeros((len(tris), 3, 3)))
-        owners.append(np.full(len(tris), i, np.int64))
-    return SceneTriangles(np.concatenate(views), np.concatenate(clips), np.concatenate(normals),
-                          np.concatenate(owners))
+            normals.append(np.zeros((obj.mesh.n_points, 3)))
+        tris.append(obj.mesh.triangles + offset)
+        owners.append(np.full(obj.mesh.n_triangles, i, np.int64))
+        offset += obj.mesh.n_points
+    return SceneGeometry(np.ascontiguousarray(np.concatenate(views)), np.concatenate(clips),
+                         np.concatenate(normals), np.concatenate(tris), np.concatenate(owners))
 
 
 def material_arrays(scene, complexity: int):
@@ -100,19 +102,19 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     cam = scene.camera
     w2v = world_to_view(cam)
     v2c = view_to_clip(cam, width / height, clipping_range(cam, scene.world_bounds()))
-    tris = transform_scene(scene, w2v, v2c)
+    geo = transform_scene(scene, w2v, v2c)
 
-    clip_v, clip_bary, clip_source = clip_triangles(tris.tri_clip)
-    verts_window = clip_to_window(clip_v, width, height)
-    depth, tri_index, bary, front = rasterize_triangles(snap_to_subpixel(verts_window), verts_window, width, height,
-                                                     options.fill_rule)
+    tri_clip, clip_bary, clip_source = clip_triangles(geo.verts_clip, geo.triangles)
+    tri_window, tri_fixed = clip_to_window(tri_clip, width, height)
+    depth, tri_index, bary, front = rasterize_triangles(tri_fixed, tri_window, width, height, options.fill_rule)
 
     lights = view_lights(scene.lights, cam, w2v)
     smooth, comp, amb, dif, spe, power = material_arrays(scene, lights.complexity)
-    rgb = np.empty((height, width, 3))
-    shade(tri_index, bary, front, np.ascontiguousarray(clip_v[:, :, 3]), clip_bary, clip_source, tris.tri_view,
-          tris.tri_normal, face_normals(tris.tri_view), tris.tri_object, smooth, comp, amb, dif, spe, power,
-          bool(cam.parallel), options.interpolation == "perspective", lights.direction, lights.position, lights.colour, lights.positional,
-          lights.cos_cone, lights.exponent, lights.attenuation, np.asarray(scene.image.background, np.float64), rgb)
-    return Frame(rgb=window_rows_to_image_rows(to_8bit(rgb)), depth=window_rows_to_image_rows(depth),
+    rgb = np.empty((height, width, 3), np.uint8)
+    shade(tri_index, bary, front, tri_clip, clip_bary, clip_source, geo.triangles, geo.verts_view, geo.normals_view,
+          geo.tri_object, smooth, comp, amb, dif, spe, power, bool(cam.parallel),
+          options.interpolation == "perspective", lights.direction, lights.position, lights.colour,
+          lights.positional, lights.cos_cone, lights.exponent, lights.attenuation,
+          to_8bit(np.asarray(scene.image.background)), rgb)
+    return Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth),
                  coverage=window_rows_to_image_rows(tri_index >= 0))

@@ -20,13 +20,16 @@ Rules, each in one place:
   affine there), rounded to the 24-bit depth buffer, test LEQUAL (a later triangle at
   equal depth wins), cleared to 1.0.
 
-Determinism: triangles are drawn serially, in the order given (objects in scene order,
-triangles in mesh order), as OpenGL guarantees; ties resolve the same way every run.
+Determinism: every pixel sees the triangles in the order given (objects in scene order,
+triangles in mesh order), as OpenGL guarantees, so ties resolve the same way every run.
+Parallelism splits the image into bands of rows, never the triangle order (see
+:func:`rasterize`), and gives the same bytes as one thread.
 """
 from __future__ import annotations
 
+import numba
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 from renderer.window import SUBPIXEL
 
@@ -82,65 +85,111 @@ def scanline_span(f, row, rule=TOP_LEFT):
     return first, last
 
 
+@njit(cache=True, parallel=True)
+def setup_triangles(tri_fixed, tri_window, height):
+    """Per-triangle set-up, once: facing, counter-clockwise fixed vertices, rows, planes.
+
+    Returns ``front`` (K,) bool; ``ccw`` (K, 3, 2) fixed vertices ordered
+    counter-clockwise (for the span test); ``rows`` (K, 2) first and last window row of
+    pixel centres it may cover (empty when first > last: zero area or off-screen);
+    ``plane`` (K, 9): x0, y0, z0, e1x, e1y, dz1, e2x, e2y, dz2 — vertex 0 and the edges to
+    vertices 1 and 2 in float window coordinates, in the triangle's own vertex order.
+    """
+    k_count = tri_fixed.shape[0]
+    front = np.empty(k_count, np.bool_)
+    ccw = np.empty((k_count, 3, 2), np.int64)
+    rows = np.empty((k_count, 2), np.int64)
+    plane = np.empty((k_count, 9))
+    for k in prange(k_count):
+        area = signed_area_fixed(tri_fixed[k])
+        front[k] = area > 0
+        ccw[k] = tri_fixed[k]
+        if area < 0:  # orient counter-clockwise for the span test; weights keep source order
+            ccw[k, 1], ccw[k, 2] = tri_fixed[k, 2], tri_fixed[k, 1]
+        x0, y0, z0 = tri_window[k, 0, 0], tri_window[k, 0, 1], tri_window[k, 0, 2]
+        plane[k, 0], plane[k, 1], plane[k, 2] = x0, y0, z0
+        for v in range(1, 3):
+            plane[k, 3 * v] = tri_window[k, v, 0] - x0
+            plane[k, 3 * v + 1] = tri_window[k, v, 1] - y0
+            plane[k, 3 * v + 2] = tri_window[k, v, 2] - z0
+        a2 = plane[k, 3] * plane[k, 7] - plane[k, 6] * plane[k, 4]
+        ys = tri_fixed[k, :, 1]
+        rows[k, 0] = max(0, ceil_div(ys.min(), SUBPIXEL))
+        rows[k, 1] = min(height - 1, ys.max() // SUBPIXEL)
+        if area == 0 or a2 == 0.0:
+            rows[k, 0], rows[k, 1] = 1, 0
+    return front, ccw, rows, plane
+
+
 @njit(cache=True)
-def rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, front, rule):
+def fill_row(k, row, ccw, plane, width, rule, depth, tri_index, bary):
+    """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes."""
+    first, last = scanline_span(ccw[k], row, rule)
+    first = max(first, 0)
+    last = min(last, width - 1)
+    if first > last:
+        return
+    x0, y0, z0 = plane[k, 0], plane[k, 1], plane[k, 2]
+    e1x, e1y, dz1 = plane[k, 3], plane[k, 4], plane[k, 5]
+    e2x, e2y, dz2 = plane[k, 6], plane[k, 7], plane[k, 8]
+    a2 = e1x * e2y - e2x * e1y
+    py = row + 0.5 - y0
+    for col in range(first, last + 1):
+        px = col + 0.5 - x0
+        l1 = (px * e2y - e2x * py) / a2
+        l2 = (e1x * py - px * e1y) / a2
+        z = z0 + l1 * dz1 + l2 * dz2
+        z = np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5) / DEPTH_MAX
+        if z <= depth[row, col]:
+            depth[row, col] = z
+            tri_index[row, col] = k
+            bary[row, col, 0] = l1
+            bary[row, col, 1] = l2
+
+
+@njit(cache=True, parallel=True)
+def rasterize(ccw, rows, plane, width, height, n_bands, rule, depth, tri_index, bary):
     """Scan-convert every triangle into the visibility buffer (the loop kernel).
 
-    tri_fixed : (K, 3, 2) int64 snapped x, y. tri_window : (K, 3, 3) float window x, y, z.
-    depth : (H, W) float, in/out. tri_index : (H, W) int64, in/out (−1 = empty).
-    bary : (H, W, 2) float, out: screen-space weights of vertices 1 and 2 at the pixel
-    centre. front : (K,) bool, out. rule : fill rule for ties (TOP_LEFT).
-    Rows are window rows (y up).
+    The image is cut into ``n_bands`` bands of whole rows, filled in parallel; each band
+    clears its rows and then draws *every* triangle in order, clipped to its rows. A
+    pixel belongs to one band and sees the triangles in draw order, so the result is the
+    same, bit for bit, as a serial loop (z-buffer ties included).
+    depth (H, W) float, tri_index (H, W) int64 (−1 = empty), bary (H, W, 2): outputs, in
+    window rows (y up); bary holds the screen-space weights of vertices 1 and 2.
     """
-    f = np.empty((3, 2), np.int64)
-    for k in range(tri_fixed.shape[0]):
-        f[:] = tri_fixed[k]
-        area = signed_area_fixed(f)
-        front[k] = area > 0
-        if area == 0:
-            continue
-        if area < 0:  # orient counter-clockwise for the span test; weights keep source order
-            f[1], f[2] = tri_fixed[k, 2], tri_fixed[k, 1]
-        x0, y0, z0 = tri_window[k, 0, 0], tri_window[k, 0, 1], tri_window[k, 0, 2]
-        e1x, e1y, dz1 = tri_window[k, 1, 0] - x0, tri_window[k, 1, 1] - y0, tri_window[k, 1, 2] - z0
-        e2x, e2y, dz2 = tri_window[k, 2, 0] - x0, tri_window[k, 2, 1] - y0, tri_window[k, 2, 2] - z0
-        a2 = e1x * e2y - e2x * e1y
-        if a2 == 0.0:
-            continue
-        row0 = max(0, ceil_div(min(f[0, 1], f[1, 1], f[2, 1]), SUBPIXEL))
-        row1 = min(height - 1, max(f[0, 1], f[1, 1], f[2, 1]) // SUBPIXEL)
-        for row in range(row0, row1 + 1):
-            first, last = scanline_span(f, row, rule)
-            first = max(first, 0)
-            last = min(last, width - 1)
-            py = row + 0.5 - y0
-            for col in range(first, last + 1):
-                px = col + 0.5 - x0
-                l1 = (px * e2y - e2x * py) / a2
-                l2 = (e1x * py - px * e1y) / a2
-                z = z0 + l1 * dz1 + l2 * dz2
-                z = np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5) / DEPTH_MAX
-                if z <= depth[row, col]:
-                    depth[row, col] = z
-                    tri_index[row, col] = k
-                    bary[row, col, 0] = l1
-                    bary[row, col, 1] = l2
+    band = (height + n_bands - 1) // n_bands
+    for b in prange(n_bands):
+        r0 = b * band
+        r1 = min(height, r0 + band) - 1
+        for row in range(r0, r1 + 1):
+            for col in range(width):
+                depth[row, col] = 1.0
+                tri_index[row, col] = -1
+        for k in range(ccw.shape[0]):
+            lo = max(rows[k, 0], r0)
+            hi = min(rows[k, 1], r1)
+            for row in range(lo, hi + 1):
+                fill_row(k, row, ccw, plane, width, rule, depth, tri_index, bary)
 
 
 def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
-                        fill_rule: str = "top-left"):
+                        fill_rule: str = "top-left", n_bands: int | None = None):
     """Allocate the visibility buffer and fill it (the Python wrapper).
 
     Returns ``depth`` (H, W), ``tri_index`` (H, W), ``bary`` (H, W, 2) in window rows
-    (y up) and ``front`` (K,) per triangle.
+    (y up) and ``front`` (K,) per triangle. ``n_bands`` defaults to four per thread.
     """
     tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
     if len(tri_fixed) != len(tri_window):
         raise ValueError("tri_fixed and tri_window must hold the same triangles")
-    depth = np.ones((height, width))
-    tri_index = np.full((height, width), -1, np.int64)
-    bary = np.zeros((height, width, 2))
-    front = np.zeros(len(tri_fixed), np.bool_)
-    rasterize(tri_fixed, tri_window, width, height, depth, tri_index, bary, front, FILL_RULES[fill_rule])
+    if n_bands is None:
+        n_bands = 4 * numba.get_num_threads()
+    n_bands = max(1, min(int(n_bands), height))
+    front, ccw, rows, plane = setup_triangles(tri_fixed, tri_window, height)
+    depth = np.empty((height, width))
+    tri_index = np.empty((height, width), np.int64)
+    bary = np.empty((height, width, 2))  # read only where tri_index ≥ 0
+    rasterize(ccw, rows, plane, width, height, n_bands, FILL_RULES[fill_rule], depth, tri_index, bary)
     return depth, tri_index, bary, front

@@ -12,29 +12,39 @@ The flip from window rows (y up) to image rows (row 0 at the top) happens in one
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
 SUBPIXEL_BITS = 8
 SUBPIXEL = 1 << SUBPIXEL_BITS  # 256 steps per pixel
 
 
-def clip_to_window(verts_clip: np.ndarray, width: int, height: int) -> np.ndarray:
-    """(..., 4) clip-space rows → (..., 3) window (x, y, z); y up, z in 0..1."""
-    ndc = verts_clip[..., :3] / verts_clip[..., 3:4]
-    out = np.empty_like(ndc)
-    out[..., 0] = (ndc[..., 0] + 1.0) * (width / 2.0)
-    out[..., 1] = (ndc[..., 1] + 1.0) * (height / 2.0)
-    out[..., 2] = (ndc[..., 2] + 1.0) / 2.0
-    return out
+@njit(cache=True)
+def clip_to_window(tri_clip, width, height):
+    """(K, 3, 4) clip-space triangles → window space.
 
-
-def snap_to_subpixel(verts_window: np.ndarray) -> np.ndarray:
-    """Window x, y → int64 fixed point on the 1/256 grid, origin at pixel centre (0, 0).
-
-    ``x_fixed = round((x − 0.5)·256)``, so integer multiples of 256 are pixel centres.
+    Returns ``tri_window`` (K, 3, 3) float (x, y up, z in 0..1) and ``tri_fixed``
+    (K, 3, 2) int64, x and y snapped to the 1/256 grid:
+    ``x_fixed = round_half_even((x − 0.5)·256)``, so multiples of 256 are pixel centres.
     """
-    return np.rint((verts_window[..., :2] - 0.5) * SUBPIXEL).astype(np.int64)
+    k_count = tri_clip.shape[0]
+    tri_window = np.empty((k_count, 3, 3))
+    tri_fixed = np.empty((k_count, 3, 2), np.int64)
+    for k in range(k_count):
+        for v in range(3):
+            w = tri_clip[k, v, 3]
+            x = (tri_clip[k, v, 0] / w + 1.0) * (width / 2.0)
+            y = (tri_clip[k, v, 1] / w + 1.0) * (height / 2.0)
+            tri_window[k, v, 0] = x
+            tri_window[k, v, 1] = y
+            tri_window[k, v, 2] = (tri_clip[k, v, 2] / w + 1.0) / 2.0
+            tri_fixed[k, v, 0] = np.int64(np.rint((x - 0.5) * SUBPIXEL))
+            tri_fixed[k, v, 1] = np.int64(np.rint((y - 0.5) * SUBPIXEL))
+    return tri_window, tri_fixed
 
 
 def window_rows_to_image_rows(a: np.ndarray) -> np.ndarray:
-    """Window row j (y up) → image row H − 1 − j (row 0 at the top). The only y flip."""
-    return np.ascontiguousarray(a[::-1])
+    """Window row j (y up) → image row H − 1 − j (row 0 at the top). The only y flip.
+
+    Returns a reversed view (no copy).
+    """
+    return a[::-1]

@@ -65,7 +65,8 @@ def test_near_plane_scene_really_crosses_the_near_plane():
     scene = load_scene("near-plane")
     cam = scene.camera
     v2c = view_to_clip(cam, scene.image.size[0] / scene.image.size[1], clipping_range(cam, scene.world_bounds()))
-    clip = transform_scene(scene, world_to_view(cam), v2c).tri_clip
+    geo = transform_scene(scene, world_to_view(cam), v2c)
+    clip = geo.verts_clip[geo.triangles]
     behind = clip[..., 2] < -clip[..., 3]
     assert (behind.any(axis=1) & ~behind.all(axis=1)).any()
 

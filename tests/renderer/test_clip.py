@@ -15,7 +15,8 @@ def clip_view(*tris_view):
     """Project view-space triangles with a 60° frustum (near 1, far 10) and clip them."""
     tris = np.array(tris_view, dtype=np.float64)
     clip = np.concatenate([tris, np.ones(tris.shape[:2] + (1,))], axis=2) @ PROJECTION
-    return clip, clip_triangles(np.ascontiguousarray(clip))
+    verts = np.ascontiguousarray(clip.reshape(-1, 4))  # the clipper takes shared vertices and index triples
+    return clip, clip_triangles(verts, np.arange(len(verts), dtype=np.int64).reshape(-1, 3))
 
 
 def assert_weights_reproduce_sources(source_clip, out_clip, out_bary, out_source):
@@ -113,6 +114,17 @@ def test_a_triangle_spanning_both_planes_is_cut_at_both():
     assert np.all(out[..., 2] + out[..., 3] >= -EPS)
     assert np.all(out[..., 3] - out[..., 2] >= -EPS)
     assert_weights_reproduce_sources(clip, out, bary, source)
+
+
+def test_shared_vertices_are_clipped_per_triangle():
+    """A quad as 4 shared vertices and index triples (0,1,2), (0,2,3), vertex 0 past the near plane: each triangle is cut on its own."""
+    verts_view = np.array([(0, 0, -0.5), (1, 0, -3), (1, 1, -3), (0, 1, -3)], dtype=np.float64)
+    verts_clip = np.ascontiguousarray(np.concatenate([verts_view, np.ones((4, 1))], axis=1) @ PROJECTION)
+    triangles = np.array([[0, 1, 2], [0, 2, 3]], dtype=np.int64)
+    out, bary, source = clip_triangles(verts_clip, triangles)
+    assert source.tolist() == [0, 0, 1, 1]
+    assert np.all(out[..., 2] + out[..., 3] >= -EPS)
+    assert_weights_reproduce_sources(verts_clip[triangles], out, bary, source)
 
 
 def test_output_keeps_source_order_and_winding():

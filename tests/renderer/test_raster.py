@@ -1,0 +1,427 @@
+"""Stage 6, the scanline fill: exact coverage in 1/256-pixel fixed point, the top-left rule, and the LEQUAL z-buffer.
+
+Coordinates in these tests are given in *pixel-centre units*: vertex (i, j) sits exactly on
+the centre of pixel (i, j), i.e. at window (i + 0.5, j + 0.5), fixed point (256·i, 256·j).
+Window y is up, so in the pictures below the top line is the highest window row. A centre
+exactly on an edge belongs to the triangle when the edge is a left edge or a bottom edge.
+"""
+import numpy as np
+import pytest
+
+from renderer.raster import DEPTH_MAX, rasterize_triangles
+from renderer.window import SUBPIXEL
+
+
+# --------------------------------------------------------------------------- helpers
+def triangles(*tris, z=0.5):
+    """(fixed, window) arrays for triangles whose vertices are (x, y) or (x, y, z) in pixel-centre units."""
+    fixed, window = [], []
+    for tri in tris:
+        f = [(round(v[0] * SUBPIXEL), round(v[1] * SUBPIXEL)) for v in tri]
+        fixed.append(f)
+        window.append([(fx / SUBPIXEL + 0.5, fy / SUBPIXEL + 0.5, v[2] if len(v) > 2 else z) for (fx, fy), v in zip(f, tri)])
+    return np.array(fixed, np.int64).reshape(-1, 3, 2), np.array(window, np.float64).reshape(-1, 3, 3)
+
+
+def raster(tris, width, height, z=0.5):
+    """Rasterise the triangles together: (depth, tri_index, bary, front), window rows (y up)."""
+    return rasterize_triangles(*triangles(*tris, z=z), width, height)
+
+
+def coverage(tri, width, height):
+    """Boolean (H, W) coverage of one triangle, window rows."""
+    return raster([tri], width, height)[1] >= 0
+
+
+def picture(text):
+    """A drawn expectation: one line per window row, the *top* line is the highest row; '.' is empty."""
+    lines = [line.strip() for line in text.strip().splitlines()]
+    return np.array([list(line) for line in lines[::-1]])
+
+
+def as_picture(tri_index):
+    """tri_index (window rows) drawn like :func:`picture` ('.' empty, else the triangle's index)."""
+    return np.where(tri_index < 0, ".", tri_index.astype(str))
+
+
+def owns(e, dx, dy):
+    """The tie rule on one edge: E > 0 inside; E = 0 counts for a left edge (dy < 0) or a bottom edge (dy = 0, dx > 0)."""
+    return e > 0 or (e == 0 and (dy < 0 or (dy == 0 and dx > 0)))
+
+
+def inside_ccw_polygon(poly_fixed, x, y):
+    """Exact point-in-convex-polygon (CCW, fixed point) with the same tie rule on every edge."""
+    n = len(poly_fixed)
+    for a in range(n):
+        (xa, ya), (xb, yb) = poly_fixed[a], poly_fixed[(a + 1) % n]
+        dx, dy = xb - xa, yb - ya
+        if not owns(dx * (y - ya) - dy * (x - xa), dx, dy):
+            return False
+    return True
+
+
+def reference_coverage(f, width, height):
+    """The slow reference: bounding box, exact integer edge functions, the top-left tie rule."""
+    f = [(int(x), int(y)) for x, y in f]
+    out = np.zeros((height, width), bool)
+    area = (f[1][0] - f[0][0]) * (f[2][1] - f[0][1]) - (f[2][0] - f[0][0]) * (f[1][1] - f[0][1])
+    if area == 0:
+        return out
+    if area < 0:
+        f = [f[0], f[2], f[1]]
+    xs, ys = [p[0] for p in f], [p[1] for p in f]
+    col0, col1 = max(0, -(-min(xs) // SUBPIXEL)), min(width - 1, max(xs) // SUBPIXEL)
+    row0, row1 = max(0, -(-min(ys) // SUBPIXEL)), min(height - 1, max(ys) // SUBPIXEL)
+    for row in range(row0, row1 + 1):
+        for col in range(col0, col1 + 1):
+            out[row, col] = inside_ccw_polygon(f, col * SUBPIXEL, row * SUBPIXEL)
+    return out
+
+
+def fan_draw_counts(centre, rim, width, height):
+    """Rasterise each triangle (centre, rim[k], rim[k+1]) on its own; how many times each pixel was drawn."""
+    counts = np.zeros((height, width), int)
+    for k in range(len(rim)):
+        counts += coverage((centre, rim[k], rim[(k + 1) % len(rim)]), width, height)
+    return counts
+
+
+def polygon_expectation(rim, width, height):
+    """Pixels the convex polygon ``rim`` (CCW, pixel-centre units) owns under the tie rule."""
+    poly = [(round(x * SUBPIXEL), round(y * SUBPIXEL)) for x, y in rim]
+    return np.array([[inside_ccw_polygon(poly, col * SUBPIXEL, row * SUBPIXEL) for col in range(width)]
+                     for row in range(height)])
+
+
+# --------------------------------------------------------------------------- hand-computed rasters
+def test_right_triangle_on_pixel_centres():
+    """(1,1), (5,1), (1,5): left and bottom legs are in, the hypotenuse (a right edge) is out — 10 pixels."""
+    expected = picture("""
+        .......
+        .......
+        .#.....
+        .##....
+        .###...
+        .####..
+        .......
+    """) == "#"
+    cov = coverage([(1, 1), (5, 1), (1, 5)], 7, 7)
+    np.testing.assert_array_equal(cov, expected)
+    assert cov.sum() == 10
+
+
+def test_triangle_with_no_centre_on_an_edge():
+    """(−0.25,−0.25), (5.75,−0.25), (−0.25,5.75): exactly the centres with i, j ≥ 0 and i + j ≤ 5 — 21 pixels."""
+    cov = coverage([(-0.25, -0.25), (5.75, -0.25), (-0.25, 5.75)], 7, 7)
+    rows, cols = np.mgrid[0:7, 0:7]
+    np.testing.assert_array_equal(cov, rows + cols <= 5)
+    assert cov.sum() == 21
+
+
+def test_centre_on_a_left_edge_is_in():
+    """(2,0) → (6,4) → (2,8): the vertical edge x = 2 runs downward, a left edge, so centre (2,4) is drawn."""
+    cov = coverage([(2, 0), (6, 4), (2, 8)], 9, 9)
+    assert cov[4, 2]
+    assert not cov[4, 1]
+    assert cov[1:8, 2].all()  # the whole edge, between the vertices
+
+
+def test_centre_on_a_right_edge_is_out():
+    """(6,0) → (6,8) → (2,4): the vertical edge x = 6 runs upward, a right edge, so centre (6,4) is not drawn."""
+    cov = coverage([(6, 0), (6, 8), (2, 4)], 9, 9)
+    assert not cov[4, 6]
+    assert cov[4, 5]
+    assert not cov[:, 6].any()
+
+
+def test_centre_on_a_bottom_edge_is_in():
+    """(0,2) → (8,2) → (4,6): the horizontal edge y = 2 runs in +x, the bottom edge (y up), so centre (4,2) is drawn."""
+    cov = coverage([(0, 2), (8, 2), (4, 6)], 9, 9)
+    assert cov[2, 4]
+    assert not cov[1, 4]
+    assert cov[2, 0:8].all() and not cov[2, 8]  # the far end is on the right edge
+
+
+def test_centre_on_a_top_edge_is_out():
+    """(4,0) → (8,6) → (0,6): the horizontal edge y = 6 runs in −x, the top edge (y up), so centre (4,6) is not drawn."""
+    cov = coverage([(4, 0), (8, 6), (0, 6)], 9, 9)
+    assert not cov[6, 4]
+    assert cov[5, 4]
+    assert not cov[6].any()
+
+
+def test_square_split_along_the_rising_diagonal():
+    """Square (1,1)–(7,7) split by (1,1)–(7,7): the diagonal's centres go to the lower-right triangle (its left edge)."""
+    _, tri_index, _, _ = raster([[(1, 1), (7, 1), (7, 7)], [(1, 1), (7, 7), (1, 7)]], 8, 8)
+    expected = picture("""
+        ........
+        .111110.
+        .111100.
+        .111000.
+        .110000.
+        .100000.
+        .000000.
+        ........
+    """)
+    np.testing.assert_array_equal(as_picture(tri_index), expected)
+
+
+def test_square_split_along_the_falling_diagonal():
+    """Square (1,1)–(7,7) split by (7,1)–(1,7): the diagonal's centres go to the upper-right triangle (its left edge)."""
+    _, tri_index, _, _ = raster([[(1, 1), (7, 1), (1, 7)], [(7, 1), (7, 7), (1, 7)]], 8, 8)
+    expected = picture("""
+        ........
+        .011111.
+        .001111.
+        .000111.
+        .000011.
+        .000001.
+        .000000.
+        ........
+    """)
+    np.testing.assert_array_equal(as_picture(tri_index), expected)
+
+
+@pytest.mark.parametrize("first_diagonal", [True, False])
+def test_shared_diagonal_is_drawn_exactly_once(first_diagonal):
+    """Each triangle drawn on its own: every pixel of the half-open square [1,7)² is drawn by exactly one of them."""
+    if first_diagonal:
+        pair = [[(1, 1), (7, 1), (7, 7)], [(1, 1), (7, 7), (1, 7)]]
+    else:
+        pair = [[(1, 1), (7, 1), (1, 7)], [(7, 1), (7, 7), (1, 7)]]
+    counts = sum(coverage(t, 8, 8).astype(int) for t in pair)
+    expected = np.zeros((8, 8), int)
+    expected[1:7, 1:7] = 1
+    np.testing.assert_array_equal(counts, expected)
+
+
+def test_eight_triangle_fan_fills_a_square_exactly_once():
+    """8 triangles around centre (8,8) with rim on the square (3..13)²: pixels [3,13)² drawn once each, nothing else."""
+    rim = [(13, 8), (13, 13), (8, 13), (3, 13), (3, 8), (3, 3), (8, 3), (13, 3)]
+    counts = fan_draw_counts((8, 8), rim, 17, 17)
+    expected = np.zeros((17, 17), int)
+    expected[3:13, 3:13] = 1
+    np.testing.assert_array_equal(counts, expected)
+    assert counts[8, 8] == 1  # the shared centre vertex
+
+
+def test_twelve_triangle_fan_draws_every_pixel_once():
+    """12 triangles around (8,8), every spoke through pixel centres: drawn once inside the rim, never twice, never outside."""
+    offsets = [(6, 0), (6, 4), (4, 6), (0, 6), (-4, 6), (-6, 4), (-6, 0), (-6, -4), (-4, -6), (0, -6), (4, -6), (6, -4)]
+    rim = [(8 + dx, 8 + dy) for dx, dy in offsets]
+    counts = fan_draw_counts((8, 8), rim, 17, 17)
+    assert counts.max() == 1
+    np.testing.assert_array_equal(counts == 1, polygon_expectation(rim, 17, 17))
+    assert counts[5:12, 5:12].all()  # well inside the rim: every pixel drawn
+    assert counts[8, 8] == 1  # the shared centre vertex
+    # rim vertices on pixel centres: the leftmost (2,8) and lowest (8,2) are drawn, the rightmost and highest are not
+    assert counts[8, 2] == 1 and counts[2, 8] == 1 and counts[8, 14] == 0 and counts[14, 8] == 0
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_fan_with_sub_pixel_vertices_draws_every_pixel_once(seed):
+    """A 16-triangle fan with a random sub-pixel centre and rim: the pixels of the rim polygon are drawn exactly once."""
+    rng = np.random.default_rng(seed)
+    centre = (12 + rng.integers(-256, 257) / 256, 12 + rng.integers(-256, 257) / 256)
+    angles = np.sort(rng.uniform(0, 2 * np.pi, 16))
+    angles = angles[np.diff(np.append(angles, angles[0] + 2 * np.pi)) > 0.05]
+    rim = [(round((12 + 10 * np.cos(a)) * 256) / 256, round((12 + 10 * np.sin(a)) * 256) / 256) for a in angles]
+    for k in range(len(rim)):  # a valid fan: every triangle counter-clockwise, the rim convex
+        for a, b, c in ((centre, rim[k], rim[(k + 1) % len(rim)]), (rim[k - 1], rim[k], rim[(k + 1) % len(rim)])):
+            assert (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]) > 0
+    counts = fan_draw_counts(centre, rim, 25, 25)
+    assert counts.max() == 1
+    np.testing.assert_array_equal(counts == 1, polygon_expectation(rim, 25, 25))
+
+
+def test_clockwise_twin_covers_the_same_pixels_and_is_a_back_face():
+    """A clockwise triangle draws exactly the pixels of its counter-clockwise twin (ties included) and reports front=False."""
+    ccw = [(1, 1), (5, 1), (1, 5)]
+    cw = [(1, 1), (1, 5), (5, 1)]
+    _, index_ccw, _, front_ccw = raster([ccw], 7, 7)
+    _, index_cw, _, front_cw = raster([cw], 7, 7)
+    np.testing.assert_array_equal(index_cw >= 0, index_ccw >= 0)
+    assert front_ccw.tolist() == [True] and front_cw.tolist() == [False]
+
+
+def test_clockwise_triangle_keeps_the_weights_in_source_order():
+    """Weights are of the given vertices 1 and 2 whatever the winding: centre (2,1) of (0,0),(4,0),(0,4) has (1/2, 1/4)."""
+    _, _, bary_ccw, _ = raster([[(0, 0), (4, 0), (0, 4)]], 6, 6)
+    _, _, bary_cw, _ = raster([[(0, 0), (0, 4), (4, 0)]], 6, 6)
+    np.testing.assert_allclose(bary_ccw[1, 2], [0.5, 0.25])  # centre (2,1): l1 = 2/4, l2 = 1/4
+    np.testing.assert_allclose(bary_cw[1, 2], [0.25, 0.5])
+
+
+@pytest.mark.parametrize("tri", [
+    [(1, 1), (3, 3), (5, 5)],          # collinear through pixel centres
+    [(0, 2), (3, 2), (6, 2)],          # along a row of centres
+    [(2, 2), (2, 2), (5, 1)],          # a repeated vertex
+    [(1, 1), (4, 1.001), (7, 1.0014)],  # not collinear, but collinear after snapping to 1/256
+], ids=["diagonal", "horizontal", "repeated-vertex", "snaps-to-a-line"])
+def test_zero_area_triangle_draws_nothing(tri):
+    """A triangle of zero area in fixed point covers no pixel, even where its points lie on pixel centres."""
+    f, _ = triangles(tri)
+    assert (f[0, 1, 0] - f[0, 0, 0]) * (f[0, 2, 1] - f[0, 0, 1]) == (f[0, 2, 0] - f[0, 0, 0]) * (f[0, 1, 1] - f[0, 0, 1])
+    assert not coverage(tri, 8, 8).any()
+
+
+def test_pixels_off_the_buffer_are_clipped_away():
+    """A triangle hanging over every side of a 6×4 buffer covers all of it and touches nothing outside."""
+    depth, tri_index, _, _ = raster([[(-100, -100), (300, -100), (-100, 300)]], 6, 4)
+    assert tri_index.shape == (4, 6) and (tri_index == 0).all()
+
+
+def test_triangle_entirely_off_screen_draws_nothing():
+    """A triangle left of, right of, below or above the buffer covers no pixel."""
+    for tri in ([(-9, 1), (-1, 1), (-5, 5)], [(6, 1), (12, 1), (9, 5)], [(1, -9), (5, -9), (3, -1)],
+                [(1, 4), (5, 4), (3, 9)]):
+        assert not coverage(tri, 6, 4).any()
+
+
+# --------------------------------------------------------------------------- depth
+def test_depth_is_rounded_to_24_bits():
+    """A constant depth 0.25 is stored as round(0.25·(2²⁴−1)) / (2²⁴−1); empty pixels stay 1.0."""
+    depth, tri_index, _, _ = raster([[(0, 0), (4, 0), (0, 4)]], 6, 6, z=0.25)
+    assert np.all(depth[tri_index >= 0] == np.floor(0.25 * DEPTH_MAX + 0.5) / DEPTH_MAX)
+    assert np.all(depth[tri_index < 0] == 1.0)
+
+
+def test_depth_is_interpolated_linearly_in_the_window():
+    """z = 0.1 at (0,0), 0.3 at (4,0), 0.9 at (0,4): at centre (1,2) z = 0.1 + 0.2·(1/4) + 0.8·(2/4) = 0.55."""
+    depth, _, _, _ = raster([[(0, 0, 0.1), (4, 0, 0.3), (0, 4, 0.9)]], 6, 6)
+    assert depth[2, 1] == np.floor(0.55 * DEPTH_MAX + 0.5) / DEPTH_MAX
+
+
+def test_equal_depth_the_later_triangle_wins():
+    """LEQUAL: two triangles at the same depth, drawn in order 0 then 1 — triangle 1 is kept wherever they overlap."""
+    tri = [(0, 0), (6, 0), (0, 6)]
+    _, tri_index, _, _ = raster([tri, tri], 8, 8)
+    assert set(np.unique(tri_index).tolist()) == {-1, 1}
+
+
+def test_depths_equal_after_24_bit_rounding_count_as_equal():
+    """Depths 0.5 and 0.5 + 1e−9 round to the same 24-bit value, so the later (slightly farther) triangle still wins."""
+    _, tri_index, _, _ = raster([[(0, 0, 0.5), (6, 0, 0.5), (0, 6, 0.5)], [(0, 0, 0.5 + 1e-9), (6, 0, 0.5 + 1e-9),
+                                                                          (0, 6, 0.5 + 1e-9)]], 8, 8)
+    assert set(np.unique(tri_index).tolist()) == {-1, 1}
+
+
+@pytest.mark.parametrize("order", [(0.25, 0.75), (0.75, 0.25)])
+def test_the_nearer_triangle_wins(order):
+    """Otherwise the smaller window depth wins, whatever the drawing order."""
+    a, b = order
+    tri = [(0, 0), (6, 0), (0, 6)]
+    depth, tri_index, _, _ = raster([[(*v, a) for v in tri], [(*v, b) for v in tri]], 8, 8)
+    nearer = 0 if a < b else 1
+    assert set(np.unique(tri_index).tolist()) == {-1, nearer}
+    assert np.all(depth[tri_index >= 0] == np.floor(0.25 * DEPTH_MAX + 0.5) / DEPTH_MAX)
+
+
+def test_overlapping_triangles_at_different_depths_interleave_by_depth():
+    """A tilted triangle through a flat one: each pixel shows whichever is nearer there."""
+    flat = [(0, 0, 0.5), (8, 0, 0.5), (0, 8, 0.5)]
+    tilted = [(0, 0, 0.0), (8, 0, 1.0), (0, 8, 0.0)]  # z = x/8: nearer than 0.5 left of x = 4
+    depth, tri_index, _, _ = raster([flat, tilted], 9, 9)
+    cols = np.broadcast_to(np.arange(9), (9, 9))
+    covered = tri_index >= 0
+    assert np.all(tri_index[covered & (cols < 4)] == 1)
+    assert np.all(tri_index[covered & (cols > 4)] == 0)
+    assert np.all(tri_index[covered & (cols == 4)] == 1)  # equal depth there: the later one
+
+
+def test_z_buffer_keeps_the_nearest_and_among_equals_the_last():
+    """80 overlapping triangles drawn together: each pixel keeps the least 24-bit depth any of them has there, the last one on ties."""
+    width, height = 37, 29
+    rng = np.random.default_rng(11)
+    fixed = np.concatenate([rng.integers(-3, 40, (40, 3, 2)) * SUBPIXEL,
+                            rng.integers(-3 * SUBPIXEL, 40 * SUBPIXEL, (40, 3, 2))])
+    z = np.where(rng.random((80, 1)) < 0.5, rng.choice([0.25, 0.5], (80, 1)), rng.uniform(0, 1, (80, 3)))
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, z[..., None] * np.ones((80, 3, 1))], axis=2)
+    depth, tri_index, _, _ = rasterize_triangles(fixed, window, width, height)
+    alone = np.full((80, height, width), np.inf)  # each triangle's own depth where it covers
+    for k in range(80):
+        d, idx, _, _ = rasterize_triangles(fixed[k:k + 1], window[k:k + 1], width, height)
+        alone[k][idx == 0] = d[idx == 0]
+    best = alone.min(axis=0)
+    last_best = 79 - np.argmax((alone == best)[::-1], axis=0)
+    covered = np.isfinite(best)
+    np.testing.assert_array_equal(tri_index, np.where(covered, last_best, -1))
+    np.testing.assert_array_equal(depth, np.where(covered, best, 1.0))
+    assert (np.sum(alone == best, axis=0) > 1).sum() > 50  # many pixels really are ties
+
+
+def test_the_bottom_right_option_hands_ties_to_the_other_edges():
+    """fill_rule="bottom-right" (the lessons' deliberately wrong rule) owns right and top edges instead of left and bottom."""
+    f, w = triangles([(1, 1), (5, 1), (1, 5)])
+    _, tri_index, _, _ = rasterize_triangles(f, w, 7, 7, fill_rule="bottom-right")
+    expected = picture("""
+        .......
+        .......
+        ..#....
+        ..##...
+        ..###..
+        .......
+        .......
+    """) == "#"
+    np.testing.assert_array_equal(tri_index >= 0, expected)
+
+
+# --------------------------------------------------------------------------- against a slow reference
+def random_triangles(rng, n, width, height):
+    """Fixed-point triangles of every kind: on pixel centres, on 1/4 pixels, arbitrary, off-screen, slivers, huge."""
+    out = []
+    for k in range(n):
+        kind = k % 6
+        if kind == 0:    # on pixel centres: many centres exactly on edges and vertices
+            f = rng.integers(-3, max(width, height) + 3, (3, 2)) * SUBPIXEL
+        elif kind == 1:  # on quarter pixels
+            f = rng.integers(-12, 4 * max(width, height) + 12, (3, 2)) * (SUBPIXEL // 4)
+        elif kind == 2:  # arbitrary sub-pixel positions around the buffer
+            f = rng.integers(-10 * SUBPIXEL, (max(width, height) + 10) * SUBPIXEL, (3, 2))
+        elif kind == 3:  # entirely or mostly off-screen
+            f = rng.integers(-60 * SUBPIXEL, 60 * SUBPIXEL, (3, 2)) + rng.choice([-1, 1], 2) * 50 * SUBPIXEL
+        elif kind == 4:  # slivers: a long edge and a vertex close to it
+            a, b = rng.integers(-5 * SUBPIXEL, (width + 5) * SUBPIXEL, (2, 2))
+            c = (a + b) // 2 + rng.integers(-200, 201, 2)
+            f = np.array([a, b, c])
+        else:            # huge: vertices up to 100 000 pixels away
+            f = rng.integers(-100_000 * SUBPIXEL, 100_000 * SUBPIXEL, (3, 2))
+        out.append(f)
+    return np.array(out, np.int64)
+
+
+def test_matches_a_slow_reference_rasteriser_on_random_triangles():
+    """Pixel for pixel, rasterize_triangles agrees with a bounding-box, integer edge-function rasteriser on 240 triangles."""
+    width, height = 37, 29
+    fixed = random_triangles(np.random.default_rng(20240611), 240, width, height)
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, np.full(fixed.shape[:2] + (1,), 0.5)], axis=2)
+    n_ties = drawn = 0
+    for f, w in zip(fixed, window):
+        _, tri_index, _, front = rasterize_triangles(f[None], w[None], width, height)
+        expected = reference_coverage(f, width, height)
+        np.testing.assert_array_equal(tri_index >= 0, expected, err_msg=f"triangle {f.tolist()}")
+        area = (f[1, 0] - f[0, 0]) * (f[2, 1] - f[0, 1]) - (f[2, 0] - f[0, 0]) * (f[1, 1] - f[0, 1])
+        assert front[0] == (area > 0)
+        drawn += expected.any()
+        n_ties += _count_centres_on_edges(f, width, height)
+    assert drawn > 120 and n_ties > 100  # the sample really exercises coverage and the tie rule
+
+
+def _count_centres_on_edges(f, width, height):
+    rows, cols = np.mgrid[0:height, 0:width] * SUBPIXEL
+    hits = np.zeros((height, width), bool)
+    for a in range(3):
+        (xa, ya), (xb, yb) = f[a], f[(a + 1) % 3]
+        e = (xb - xa) * (rows - ya) - (yb - ya) * (cols - xa)
+        within = ((cols - xa) * (cols - xb) <= 0) & ((rows - ya) * (rows - yb) <= 0)
+        hits |= (e == 0) & within
+    return int(hits.sum())
+
+
+def test_huge_triangles_are_exact_far_from_their_vertices():
+    """A triangle with vertices 100 000 pixels away still puts its edge exactly through the expected centres."""
+    # the lower-right half of a 200 000-pixel square: its diagonal y = x runs down-left, a left edge → centres on it are in
+    tri = [(-100_000, -100_000), (100_000, -100_000), (100_000, 100_000)]
+    cov = coverage(tri, 10, 10)
+    rows, cols = np.mgrid[0:10, 0:10]
+    np.testing.assert_array_equal(cov, rows <= cols)
