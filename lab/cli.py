@@ -151,7 +151,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("bench", help="frame time of scanlab and of VTK for one scene, in one process")
     _scene_args(p)
-    p.add_argument("--repeat", type=int, default=20, help="timed frames per renderer (default 20)")
+    p.add_argument("--repeat", type=int, default=30, help="timed frames per renderer (default 30)")
     p.set_defaults(func=cmd_bench)
 
     p = sub.add_parser("demo", help="compare every preset scene and build a page of side-by-side panels")

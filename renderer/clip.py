@@ -16,6 +16,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from renderer.workspace import empty
+
 GUARD = 8.0
 N_PLANES = 6
 MAX_POLY = 3 + N_PLANES  # each plane adds at most one vertex to a convex polygon
@@ -64,9 +66,12 @@ def clip_polygon(poly, bary, n, plane, out_poly, out_bary):
     return m
 
 
-@njit(cache=True)
-def clip_triangles(verts_clip, triangles):
+def clip_triangles(verts_clip, triangles, ws=None):
     """Clip triangles given as (N, 4) clip-space vertices and (T, 3) vertex indices.
+
+    Parameters
+    ----------
+    ws : renderer.workspace.Workspace, optional; the outputs then live in it.
 
     Returns
     -------
@@ -74,11 +79,24 @@ def clip_triangles(verts_clip, triangles):
     out_bary : (K, 3, 3) each vertex's barycentric weights in its source triangle.
     out_source : (K,) index of the source triangle.
     """
+    verts_clip = np.ascontiguousarray(verts_clip, dtype=np.float64)
+    triangles = np.ascontiguousarray(triangles, dtype=np.int64)
+    cap = len(triangles) + 16
+    while True:
+        out_clip = empty(ws, "clip.clip", (cap, 3, 4))
+        out_bary = empty(ws, "clip.bary", (cap, 3, 3))
+        out_source = empty(ws, "clip.source", cap, np.int64)
+        k = clip_into(verts_clip, triangles, out_clip, out_bary, out_source)
+        if k >= 0:
+            return out_clip[:k], out_bary[:k], out_source[:k]
+        cap *= 2  # more pieces than room: try again with twice the room
+
+
+@njit(cache=True)
+def clip_into(verts_clip, triangles, out_clip, out_bary, out_source):
+    """The loop kernel of :func:`clip_triangles`; returns the piece count, −1 if out of room."""
     t_count = triangles.shape[0]
-    cap = t_count + 16
-    out_clip = np.empty((cap, 3, 4))
-    out_bary = np.empty((cap, 3, 3))
-    out_source = np.empty(cap, np.int64)
+    cap = out_clip.shape[0]
     poly = np.empty((MAX_POLY, 4))
     bary = np.empty((MAX_POLY, 3))
     tmp_poly = np.empty((MAX_POLY, 4))
@@ -105,11 +123,8 @@ def clip_triangles(verts_clip, triangles):
                     break
         if n < 3:
             continue
-        if k + n - 2 > cap:  # grow the output
-            cap = 2 * cap + n
-            out_clip = _grow(out_clip, cap)
-            out_bary = _grow(out_bary, cap)
-            out_source = _grow(out_source, cap)
+        if k + n - 2 > cap:
+            return -1
         for i in range(1, n - 1):
             for c in range(4):
                 out_clip[k, 0, c], out_clip[k, 1, c], out_clip[k, 2, c] = poly[0, c], poly[i, c], poly[i + 1, c]
@@ -117,11 +132,4 @@ def clip_triangles(verts_clip, triangles):
                 out_bary[k, 0, c], out_bary[k, 1, c], out_bary[k, 2, c] = bary[0, c], bary[i, c], bary[i + 1, c]
             out_source[k] = t
             k += 1
-    return out_clip[:k], out_bary[:k], out_source[:k]
-
-
-@njit(cache=True)
-def _grow(a, cap):
-    b = np.empty((cap,) + a.shape[1:], a.dtype)
-    b[: a.shape[0]] = a
-    return b
+    return k

@@ -20,6 +20,7 @@ from renderer.raster import rasterize_triangles
 from renderer.shading import shade, to_8bit
 from renderer.transform import normal_matrix, transform_points
 from renderer.window import clip_to_window, window_rows_to_image_rows
+from renderer.workspace import thread_workspace
 
 
 @dataclass(frozen=True)
@@ -104,9 +105,11 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     v2c = view_to_clip(cam, width / height, clipping_range(cam, scene.world_bounds()))
     geo = transform_scene(scene, w2v, v2c)
 
-    tri_clip, clip_bary, clip_source = clip_triangles(geo.verts_clip, geo.triangles)
-    tri_window, tri_fixed = clip_to_window(tri_clip, width, height)
-    depth, tri_index, bary, front = rasterize_triangles(tri_fixed, tri_window, width, height, options.fill_rule)
+    ws = thread_workspace()
+    tri_clip, clip_bary, clip_source = clip_triangles(geo.verts_clip, geo.triangles, ws)
+    tri_window, tri_fixed = clip_to_window(tri_clip, width, height, ws)
+    depth, tri_index, bary, front = rasterize_triangles(tri_fixed, tri_window, width, height, options.fill_rule,
+                                                        ws=ws)
 
     lights = view_lights(scene.lights, cam, w2v)
     smooth, comp, amb, dif, spe, power = material_arrays(scene, lights.complexity)
@@ -116,5 +119,5 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
           options.interpolation == "perspective", lights.direction, lights.position, lights.colour,
           lights.positional, lights.cos_cone, lights.exponent, lights.attenuation,
           to_8bit(np.asarray(scene.image.background)), rgb)
-    return Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth),
+    return Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth.copy()),
                  coverage=window_rows_to_image_rows(tri_index >= 0))

@@ -32,6 +32,7 @@ import numpy as np
 from numba import njit, prange
 
 from renderer.window import SUBPIXEL
+from renderer.workspace import empty
 
 TOP_LEFT, BOTTOM_RIGHT = 0, 1  # fill rules; BOTTOM_RIGHT exists to show what a wrong rule does
 FILL_RULES = {"top-left": TOP_LEFT, "bottom-right": BOTTOM_RIGHT}
@@ -40,19 +41,19 @@ DEPTH_BITS = 24
 DEPTH_MAX = float((1 << DEPTH_BITS) - 1)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def ceil_div(a, b):
     """⌈a / b⌉ for integers, b > 0."""
     return -((-a) // b)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def signed_area_fixed(f):
     """Twice the signed area of a fixed-point triangle (3, 2); > 0 = counter-clockwise (front)."""
     return (f[1, 0] - f[0, 0]) * (f[2, 1] - f[0, 1]) - (f[2, 0] - f[0, 0]) * (f[1, 1] - f[0, 1])
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def scanline_span(f, row, rule=TOP_LEFT):
     """Columns [first, last] of the pixel centres inside a CCW fixed-point triangle on ``row``.
 
@@ -86,21 +87,16 @@ def scanline_span(f, row, rule=TOP_LEFT):
 
 
 @njit(cache=True, parallel=True)
-def setup_triangles(tri_fixed, tri_window, height):
+def setup_triangles(tri_fixed, tri_window, height, front, ccw, rows, plane):
     """Per-triangle set-up, once: facing, counter-clockwise fixed vertices, rows, planes.
 
-    Returns ``front`` (K,) bool; ``ccw`` (K, 3, 2) fixed vertices ordered
+    Writes ``front`` (K,) bool; ``ccw`` (K, 3, 2) fixed vertices ordered
     counter-clockwise (for the span test); ``rows`` (K, 2) first and last window row of
     pixel centres it may cover (empty when first > last: zero area or off-screen);
     ``plane`` (K, 9): x0, y0, z0, e1x, e1y, dz1, e2x, e2y, dz2 — vertex 0 and the edges to
     vertices 1 and 2 in float window coordinates, in the triangle's own vertex order.
     """
-    k_count = tri_fixed.shape[0]
-    front = np.empty(k_count, np.bool_)
-    ccw = np.empty((k_count, 3, 2), np.int64)
-    rows = np.empty((k_count, 2), np.int64)
-    plane = np.empty((k_count, 9))
-    for k in prange(k_count):
+    for k in prange(tri_fixed.shape[0]):
         area = signed_area_fixed(tri_fixed[k])
         front[k] = area > 0
         ccw[k] = tri_fixed[k]
@@ -118,10 +114,9 @@ def setup_triangles(tri_fixed, tri_window, height):
         rows[k, 1] = min(height - 1, ys.max() // SUBPIXEL)
         if area == 0 or a2 == 0.0:
             rows[k, 0], rows[k, 1] = 1, 0
-    return front, ccw, rows, plane
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def fill_row(k, row, ccw, plane, width, rule, depth, tri_index, bary):
     """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes."""
     first, last = scanline_span(ccw[k], row, rule)
@@ -174,22 +169,28 @@ def rasterize(ccw, rows, plane, width, height, n_bands, rule, depth, tri_index, 
 
 
 def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
-                        fill_rule: str = "top-left", n_bands: int | None = None):
+                        fill_rule: str = "top-left", n_bands: int | None = None, ws=None):
     """Allocate the visibility buffer and fill it (the Python wrapper).
 
     Returns ``depth`` (H, W), ``tri_index`` (H, W), ``bary`` (H, W, 2) in window rows
-    (y up) and ``front`` (K,) per triangle. ``n_bands`` defaults to four per thread.
+    (y up) and ``front`` (K,) per triangle. ``n_bands`` defaults to two per thread.
+    With a workspace ``ws`` every array lives in it.
     """
     tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
     if len(tri_fixed) != len(tri_window):
         raise ValueError("tri_fixed and tri_window must hold the same triangles")
     if n_bands is None:
-        n_bands = 4 * numba.get_num_threads()
+        n_bands = 2 * numba.get_num_threads()
     n_bands = max(1, min(int(n_bands), height))
-    front, ccw, rows, plane = setup_triangles(tri_fixed, tri_window, height)
-    depth = np.empty((height, width))
-    tri_index = np.empty((height, width), np.int64)
-    bary = np.empty((height, width, 2))  # read only where tri_index ≥ 0
+    k_count = len(tri_fixed)
+    front = empty(ws, "raster.front", k_count, np.bool_)
+    ccw = empty(ws, "raster.ccw", (k_count, 3, 2), np.int64)
+    rows = empty(ws, "raster.rows", (k_count, 2), np.int64)
+    plane = empty(ws, "raster.plane", (k_count, 9))
+    setup_triangles(tri_fixed, tri_window, height, front, ccw, rows, plane)
+    depth = empty(ws, "raster.depth", (height, width))
+    tri_index = empty(ws, "raster.tri_index", (height, width), np.int64)
+    bary = empty(ws, "raster.bary", (height, width, 2))  # read only where tri_index ≥ 0
     rasterize(ccw, rows, plane, width, height, n_bands, FILL_RULES[fill_rule], depth, tri_index, bary)
     return depth, tri_index, bary, front

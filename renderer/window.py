@@ -14,21 +14,31 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from renderer.workspace import empty
+
 SUBPIXEL_BITS = 8
 SUBPIXEL = 1 << SUBPIXEL_BITS  # 256 steps per pixel
 
 
-@njit(cache=True)
-def clip_to_window(tri_clip, width, height):
+def clip_to_window(tri_clip, width, height, ws=None):
     """(K, 3, 4) clip-space triangles → window space.
 
     Returns ``tri_window`` (K, 3, 3) float (x, y up, z in 0..1) and ``tri_fixed``
     (K, 3, 2) int64, x and y snapped to the 1/256 grid:
     ``x_fixed = round_half_even((x − 0.5)·256)``, so multiples of 256 are pixel centres.
+    With a workspace ``ws`` the outputs live in it.
     """
+    tri_clip = np.ascontiguousarray(tri_clip, dtype=np.float64).reshape(-1, 3, 4)
+    tri_window = empty(ws, "window.window", (len(tri_clip), 3, 3))
+    tri_fixed = empty(ws, "window.fixed", (len(tri_clip), 3, 2), np.int64)
+    window_into(tri_clip, width, height, tri_window, tri_fixed)
+    return tri_window, tri_fixed
+
+
+@njit(cache=True)
+def window_into(tri_clip, width, height, tri_window, tri_fixed):
+    """The loop kernel of :func:`clip_to_window`."""
     k_count = tri_clip.shape[0]
-    tri_window = np.empty((k_count, 3, 3))
-    tri_fixed = np.empty((k_count, 3, 2), np.int64)
     for k in range(k_count):
         for v in range(3):
             w = tri_clip[k, v, 3]
@@ -39,7 +49,6 @@ def clip_to_window(tri_clip, width, height):
             tri_window[k, v, 2] = (tri_clip[k, v, 2] / w + 1.0) / 2.0
             tri_fixed[k, v, 0] = np.int64(np.rint((x - 0.5) * SUBPIXEL))
             tri_fixed[k, v, 1] = np.int64(np.rint((y - 0.5) * SUBPIXEL))
-    return tri_window, tri_fixed
 
 
 def window_rows_to_image_rows(a: np.ndarray) -> np.ndarray:

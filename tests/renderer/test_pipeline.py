@@ -129,3 +129,36 @@ def test_kernels_run_as_plain_python_with_the_same_bytes(tmp_path):
     np.testing.assert_array_equal(plain["coverage"], jitted.coverage)
     np.testing.assert_array_equal(plain["depth"], jitted.depth)
     np.testing.assert_array_equal(plain["rgb"], jitted.rgb)
+
+
+def test_threads_and_bands_do_not_change_a_byte():
+    """One thread or two, one band of rows or many: the same depth, coverage and colours (z-buffer ties included)."""
+    import numba
+
+    from renderer.raster import rasterize_triangles
+    from renderer.window import clip_to_window
+    from renderer.clip import clip_triangles
+
+    # Two coincident copies of a sphere: every pixel is a depth tie the later copy must win.
+    ball = icosphere(level=3)
+    twin = SceneObject(mesh=ball, material=Material(color=(0.2, 0.8, 0.3)))
+    scene = Scene(image=Image(size=(160, 120)), camera=Camera(position=(1.0, 1.5, 4.0)), lights=(headlight(),),
+                  objects=(SceneObject(mesh=ball), twin))
+    reference = render(scene)
+    saved = numba.get_num_threads()
+    try:
+        numba.set_num_threads(1)
+        serial = render(scene)
+    finally:
+        numba.set_num_threads(saved)
+    assert np.array_equal(serial.rgb, reference.rgb) and np.array_equal(serial.depth, reference.depth)
+    assert (reference.rgb[reference.coverage] == serial.rgb[serial.coverage]).all()
+
+    clip = np.concatenate([(np.c_[ball.points, np.ones(len(ball.points))] * 0.9) + [0, 0, 0, 2.0]])
+    tri_clip, _, _ = clip_triangles(clip, ball.triangles)
+    window, fixed = clip_to_window(tri_clip, 97, 61)
+    one = rasterize_triangles(fixed, window, 97, 61, n_bands=1)
+    for bands in (2, 7, 61):
+        many = rasterize_triangles(fixed, window, 97, 61, n_bands=bands)
+        for a, b in zip(one, many):
+            assert np.array_equal(a[one[1] >= 0] if a.ndim == 3 else a, b[one[1] >= 0] if b.ndim == 3 else b)
