@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import functools
 import os
+import re
 import subprocess
 import sys
 
@@ -41,7 +42,8 @@ def check_offscreen_gl() -> None:
     except (OSError, subprocess.TimeoutExpired) as exc:
         raise ReferenceUnavailable(f"VTK offscreen OpenGL probe failed ({exc}); {PACKAGES_HINT}") from None
     if result.returncode != 0:
-        last = (result.stderr.strip().splitlines() or ["no message"])[-1][:160]
+        lines = re.sub(r"\x1b\[[0-9;]*m", "", result.stderr).strip().splitlines() or ["no message"]
+        last = lines[-1].rsplit("| ", 1)[-1].strip()[:160]
         if "No module named" in last:
             raise ReferenceUnavailable(f"VTK is not installed ({last}); run `make demo` or `pip install -e .`")
         raise ReferenceUnavailable(f"VTK could not create an offscreen OpenGL context ({last}); {PACKAGES_HINT}")

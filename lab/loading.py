@@ -7,6 +7,7 @@ one-line message names the file and the key. Colours are quantised to k/255 on l
 from __future__ import annotations
 
 import difflib
+import inspect
 import math
 import tomllib
 from pathlib import Path
@@ -184,26 +185,24 @@ def _mesh_file(s: _Section, base: Path | None, value) -> Mesh:
 
 # --------------------------------------------------------------------------- shapes
 def make_shape(name, params: dict, where=None) -> Mesh:
-    """Build a built-in shape by name with keyword parameters, checking both."""
-    err = where or (lambda m: SceneError(m))
+    """Build a built-in shape by name with keyword parameters, checking both.
+
+    ``where(message)`` makes the exception to raise (so a scene file can name its key).
+    """
+    err = where or SceneError
     if name not in shapes.SHAPES:
         raise err(f"unknown shape {name!r}; valid: {', '.join(shapes.SHAPES)}")
-    try:
-        import inspect
-
-        sig = inspect.signature(shapes.SHAPES[name])
-        for key, value in params.items():
-            if key not in sig.parameters:
-                raise err(f"{name} has no parameter {key!r}; valid: {', '.join(sig.parameters)}")
-            default = sig.parameters[key].default
-            if isinstance(default, int) and (not isinstance(value, int) or isinstance(value, bool) or not 0 <= value <= 8):
-                raise err(f"{name}: {key} must be a whole number in 0..8, got {value!r}")
-            if isinstance(default, float) and (isinstance(value, bool) or not isinstance(value, (int, float))
-                                               or not math.isfinite(value) or value <= 0):
-                raise err(f"{name}: {key} must be a positive number, got {value!r}")
-        return shapes.SHAPES[name](**params)
-    except SceneError:
-        raise
+    sig = inspect.signature(shapes.SHAPES[name])
+    for key, value in params.items():
+        if key not in sig.parameters:
+            raise err(f"{name} has no parameter {key!r}; valid: {', '.join(sig.parameters)}")
+        default = sig.parameters[key].default
+        if isinstance(default, int) and (not isinstance(value, int) or isinstance(value, bool) or not 0 <= value <= 8):
+            raise err(f"{name}: {key} must be a whole number in 0..8, got {value!r}")
+        if isinstance(default, float) and (isinstance(value, bool) or not isinstance(value, (int, float))
+                                           or not math.isfinite(value) or value <= 0):
+            raise err(f"{name}: {key} must be a positive number, got {value!r}")
+    return shapes.SHAPES[name](**params)
 
 
 def parse_shape_spec(spec: str) -> tuple[str, dict]:
