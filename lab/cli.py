@@ -50,26 +50,26 @@ def _output(path: str, scene_spec: str) -> Path:
     return out
 
 
-def cmd_render(args) -> int:
+def _draw_to_png(args, draw) -> int:
     from compare.images import write_png
-    from renderer import render
 
     scene = _load(args)
     out = _output(args.output, args.scene)
-    write_png(out, render(scene).rgb)
+    write_png(out, draw(scene).rgb)
     print(f"wrote {out}")
     return 0
+
+
+def cmd_render(args) -> int:
+    from renderer import render
+
+    return _draw_to_png(args, render)
 
 
 def cmd_reference(args) -> int:
-    from compare.images import write_png
     from compare.reference import render_reference
 
-    scene = _load(args)
-    out = _output(args.output, args.scene)
-    write_png(out, render_reference(scene).rgb)
-    print(f"wrote {out}")
-    return 0
+    return _draw_to_png(args, render_reference)
 
 
 def cmd_compare(args) -> int:

@@ -11,7 +11,6 @@ it. Conventions:
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from pathlib import Path
 
 import numpy as np
 
