@@ -16,7 +16,8 @@ import numpy as np
 
 from lab import shapes
 from lab.mesh import Mesh
-from lab.scene import LIGHT_KINDS, SHADINGS, Camera, Image, Light, Material, Scene, SceneObject, headlight
+from lab.scene import (INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, Camera, Image, Light, Material, RenderSettings,
+                       Scene, SceneObject, headlight)
 from renderer.transform import model_matrix
 
 MAX_SIZE = 8192
@@ -124,23 +125,43 @@ def _camera(src, table) -> Camera:
 
 def _light(src, i, table) -> Light:
     s = _Section(src, f"light[{i}]", table, {"kind", "position", "focal_point", "color", "intensity", "positional",
-                                             "cone_angle", "exponent", "attenuation", "on"})
+                                             "cone_angle", "exponent", "attenuation", "on", "ambient_color",
+                                             "diffuse_color", "specular_color"})
     kind = s.choice("kind", "scene", LIGHT_KINDS)
     att = s.vector("attenuation", (1.0, 0.0, 0.0), 3, 0.0)
     if sum(att) <= 0:
         raise s.error("attenuation", "needs at least one positive coefficient")
-    return Light(kind=kind, position=s.vector("position", (0.0, 0.0, 1.0)),
-                 focal_point=s.vector("focal_point", (0.0, 0.0, 0.0)),
+    position, focal, positional = _light_position(s, table)
+    return Light(kind=kind, position=position, focal_point=focal, positional=positional,
+                 ambient_color=s.colour("ambient_color", (0.0, 0.0, 0.0)),
+                 diffuse_color=s.colour("diffuse_color", None), specular_color=s.colour("specular_color", None),
                  color=s.colour("color", (1.0, 1.0, 1.0)),
                  intensity=s.number("intensity", 1.0, 0.0, 1e3),
-                 positional=s.flag("positional", False),
                  cone_angle=s.number("cone_angle", 90.0, 0.0, 180.0, lo_open=True),
                  exponent=s.number("exponent", 1.0, 0.0, 128.0),
                  attenuation=att, on=s.flag("on", True))
 
 
+def _light_position(s: _Section, table: dict):
+    """(position, focal_point, positional) from 3 values, or OpenGL's 4 = [x, y, z, w]."""
+    raw = table.get("position", (0.0, 0.0, 1.0))
+    if isinstance(raw, list) and len(raw) == 4:
+        x, y, z, w = s.vector("position", None, 4)
+        if "positional" in table or "focal_point" in table:
+            raise s.error("position", "a 4-value position [x, y, z, w] sets 'positional' and the focal point "
+                                      "itself (w = 0: directional toward the origin; w ≠ 0: point light)")
+        if w == 0.0:
+            if (x, y, z) == (0.0, 0.0, 0.0):
+                raise s.error("position", "a directional light [x, y, z, 0] needs a nonzero direction")
+            return (x, y, z), (0.0, 0.0, 0.0), False
+        return (x / w, y / w, z / w), (0.0, 0.0, 0.0), True
+    return s.vector("position", (0.0, 0.0, 1.0)), s.vector("focal_point", (0.0, 0.0, 0.0)), \
+        s.flag("positional", False)
+
+
 OBJECT_KEYS = {"mesh", "shape", "params", "color", "ambient", "diffuse", "specular", "specular_power",
-               "specular_color", "opacity", "shading", "scale", "rotate", "translate", "lighting", "name"}
+               "specular_color", "opacity", "shading", "scale", "rotate", "translate", "lighting", "name",
+               "model", "ambient_color", "diffuse_color", "shininess", "normals", "crease_angle"}
 
 
 def _object(src, base: Path | None, i, table) -> SceneObject:
@@ -160,7 +181,10 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
                    diffuse=s.number("diffuse", 1.0, 0.0, 1.0), specular=s.number("specular", 0.0, 0.0, 1.0),
                    specular_power=s.number("specular_power", 1.0, 0.0, 1000.0),
                    specular_color=s.colour("specular_color", None), opacity=s.number("opacity", 1.0, 0.0, 1.0),
-                   lighting=s.flag("lighting", True))
+                   lighting=s.flag("lighting", True), model=s.choice("model", "vtk", MODELS),
+                   ambient_color=s.colour("ambient_color", None), diffuse_color=s.colour("diffuse_color", None),
+                   shininess=s.number("shininess", 0.0, 0.0, 128.0))
+    mesh = _normals(s, mesh, table)
     if mat.opacity != 1.0:
         raise s.error("opacity", f"{mat.opacity:g}: translucency is not drawn yet; only 1.0 is accepted")
     m = model_matrix(scale=s.vector("scale", (1.0, 1.0, 1.0)), rotate=s.vector("rotate", (0.0, 0.0, 0.0)),
@@ -169,6 +193,24 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
         raise s.error("scale", "a zero scale flattens the object")
     return SceneObject(mesh=mesh, material=mat, shading=s.choice("shading", "flat", SHADINGS),
                        model_to_world=m, name=str(table.get("name", name)))
+
+
+def _normals(s: _Section, mesh: Mesh, table: dict) -> Mesh:
+    """Apply the object's ``normals`` choice once, here, so both renderers get the result."""
+    from lab.normals import NORMAL_MODES, with_normals
+
+    mode = s.choice("normals", "file", NORMAL_MODES)
+    crease = s.number("crease_angle", 180.0, 0.0, 180.0) if "crease_angle" in table else None
+    if crease is not None and mode != "computed":
+        raise s.error("crease_angle", "only applies with normals = \"computed\"")
+    return with_normals(mesh, mode, crease, source=s.source)
+
+
+def _render(src, table) -> RenderSettings:
+    s = _Section(src, "render", table, {"interpolation", "global_ambient", "local_viewer", "ambient"})
+    return RenderSettings(interpolation=s.choice("interpolation", "perspective", INTERPOLATIONS),
+                          global_ambient=s.colour("global_ambient", (0.2, 0.2, 0.2)),
+                          local_viewer=s.flag("local_viewer", False), ambient=s.colour("ambient", (1.0, 1.0, 1.0)))
 
 
 def _mesh_file(s: _Section, base: Path | None, value) -> Mesh:
@@ -284,7 +326,7 @@ def load_scene(path_or_name) -> Scene:
 
 def scene_from_dict(data: dict, source: str = "<scene>", base: Path | None = None) -> Scene:
     """Build a validated :class:`Scene` from parsed TOML (see the README for the keys)."""
-    _Section(source, "", data, {"image", "camera", "light", "object"})
+    _Section(source, "", data, {"image", "camera", "light", "object", "render"})
 
     def table(key, want):
         v = data.get(key, want())
@@ -298,4 +340,4 @@ def scene_from_dict(data: dict, source: str = "<scene>", base: Path | None = Non
         raise SceneError(f"{source}: object: the scene has no [[object]]")
     lights = tuple(_light(source, i, t) for i, t in enumerate(table("light", list))) or (headlight(),)
     return Scene(image=_image(source, table("image", dict)), camera=_camera(source, table("camera", dict)),
-                 lights=lights, objects=objects, source=source)
+                 lights=lights, objects=objects, source=source, render=_render(source, table("render", dict)))

@@ -17,7 +17,9 @@ import numpy as np
 from lab.mesh import Mesh
 
 SHADINGS = ("flat", "gouraud", "phong")
-LIGHT_KINDS = ("scene", "camera", "headlight")
+MODELS = ("vtk", "opengl", "classic")
+LIGHT_KINDS = ("scene", "camera", "headlight", "eye")
+INTERPOLATIONS = ("perspective", "screen")
 
 Vec3 = tuple[float, float, float]
 
@@ -55,11 +57,19 @@ class Light:
 
     ``kind``: "scene" (position/focal point in world space), "camera" (in the camera's
     frame: (0, 0, 1) is the camera, (0, 0, 0) the focal point, lengths in units of the
-    camera distance) or "headlight" (at the camera, aimed at the focal point; position and
-    focal point ignored). ``color`` linear 0..1 RGB times ``intensity`` is the light's
-    colour. ``positional`` makes a point light, a spot light when ``cone_angle`` < 90
-    (degrees, half-angle) with falloff ``cos^exponent``; ``attenuation`` = (constant,
-    linear, quadratic) applies to positional lights only.
+    camera distance), "headlight" (at the camera, aimed at the focal point; position and
+    focal point ignored) or "eye" (position and focal point in eye = view coordinates,
+    as a light set with glLightfv right after glLoadIdentity). ``color`` linear 0..1 RGB
+    times ``intensity`` is the light's colour. ``positional`` makes a point light, a spot
+    light when ``cone_angle`` < 90 (degrees, half-angle) with falloff ``cos^exponent``;
+    ``attenuation`` = (constant, linear, quadratic) applies to positional lights only.
+    A scene file's four-value ``position = [x, y, z, w]`` (OpenGL's) means a point light
+    at (x, y, z)/w when w ≠ 0 and a directional light from (x, y, z) toward the origin
+    when w = 0, i.e. ``positional = (w != 0)`` with the focal point at the origin.
+
+    The OpenGL model alone also reads ``ambient_color`` (default black),
+    ``diffuse_color`` and ``specular_color`` (default ``color × intensity``); the VTK
+    model ignores them, as VTK does.
     """
 
     kind: str = "scene"
@@ -72,6 +82,22 @@ class Light:
     exponent: float = 1.0
     attenuation: Vec3 = (1.0, 0.0, 0.0)
     on: bool = True
+    ambient_color: Vec3 = (0.0, 0.0, 0.0)
+    diffuse_color: Vec3 | None = None
+    specular_color: Vec3 | None = None
+
+    @property
+    def colour(self) -> np.ndarray:
+        """colour × intensity, linear RGB (what VTK and the classic model use)."""
+        return np.asarray(self.color) * self.intensity
+
+    @property
+    def gl_diffuse(self) -> np.ndarray:
+        return self.colour if self.diffuse_color is None else np.asarray(self.diffuse_color)
+
+    @property
+    def gl_specular(self) -> np.ndarray:
+        return self.colour if self.specular_color is None else np.asarray(self.specular_color)
 
 
 @dataclass(frozen=True)
@@ -80,6 +106,13 @@ class Material:
 
     ``specular_color`` None means the object colour (VTK's ``color=`` sets all three).
     ``lighting`` False draws ``ambient·color + diffuse·color`` unlit.
+
+    ``model`` chooses the reflection model (see ``renderer/lighting``): "vtk" (VTK's
+    own), "opengl" (fixed-function OpenGL: material ``ambient_color`` and
+    ``diffuse_color``, default ``color``; ``specular_color``, default black;
+    ``shininess`` 0..128, Blinn's half vector) or "classic" (the course's
+    ``Ka·O·A + Σ Kd·O·I·(L·N) + Ks·I·(R·V)^n`` with ``ambient``, ``diffuse``,
+    ``specular``, ``specular_power``).
     """
 
     color: Vec3 = (1.0, 1.0, 1.0)
@@ -90,10 +123,43 @@ class Material:
     specular_color: Vec3 | None = None
     opacity: float = 1.0
     lighting: bool = True
+    model: str = "vtk"
+    ambient_color: Vec3 | None = None
+    diffuse_color: Vec3 | None = None
+    shininess: float = 0.0
 
     @property
     def effective_specular_color(self) -> Vec3:
         return self.color if self.specular_color is None else self.specular_color
+
+    @property
+    def gl_ambient(self) -> np.ndarray:
+        return np.asarray(self.color if self.ambient_color is None else self.ambient_color)
+
+    @property
+    def gl_diffuse(self) -> np.ndarray:
+        return np.asarray(self.color if self.diffuse_color is None else self.diffuse_color)
+
+    @property
+    def gl_specular(self) -> np.ndarray:
+        return np.zeros(3) if self.specular_color is None else np.asarray(self.specular_color)
+
+
+@dataclass(frozen=True)
+class RenderSettings:
+    """Scene-wide rendering choices (``[render]`` in a scene file).
+
+    interpolation : "perspective" (GPUs, VTK) or "screen" (linear along edges and spans,
+        as the course's scanline slides) for colours, normals and positions.
+    global_ambient : OpenGL's light-model ambient, linear RGB (GL default 0.2 grey).
+    local_viewer : OpenGL's GL_LIGHT_MODEL_LOCAL_VIEWER (default: infinite viewer).
+    ambient : the classic model's ambient light colour A, linear RGB.
+    """
+
+    interpolation: str = "perspective"
+    global_ambient: Vec3 = (0.2, 0.2, 0.2)
+    local_viewer: bool = False
+    ambient: Vec3 = (1.0, 1.0, 1.0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -134,6 +200,7 @@ class Scene:
     lights: tuple[Light, ...]
     objects: tuple[SceneObject, ...]
     source: str = "<scene>"
+    render: RenderSettings = field(default_factory=RenderSettings)
 
     def world_bounds(self) -> np.ndarray:
         """Union of the objects' :meth:`SceneObject.world_bounds` (VTK's visible-prop bounds)."""
@@ -142,11 +209,15 @@ class Scene:
         b = np.array([o.world_bounds() for o in self.objects])
         return np.array([b[:, 0].min(), b[:, 1].max(), b[:, 2].min(), b[:, 3].max(), b[:, 4].min(), b[:, 5].max()])
 
-    def with_overrides(self, shading: str | None = None, size: tuple[int, int] | None = None) -> "Scene":
-        """A copy with every object's shading and/or the image size replaced."""
+    def with_overrides(self, shading: str | None = None, size: tuple[int, int] | None = None,
+                       model: str | None = None) -> "Scene":
+        """A copy with every object's shading and/or model, and/or the image size, replaced."""
         scene = self
         if shading is not None:
             objs = tuple(replace(o, shading=shading) for o in scene.objects)
+            scene = replace(scene, objects=objs)
+        if model is not None:
+            objs = tuple(replace(o, material=replace(o.material, model=model)) for o in scene.objects)
             scene = replace(scene, objects=objs)
         if size is not None:
             scene = replace(scene, image=replace(scene.image, size=tuple(size)))

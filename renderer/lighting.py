@@ -20,7 +20,7 @@ projection). Source: VTK 9.7 ``vtkOpenGLPolyDataMapper::ReplaceShaderLight`` and
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -44,14 +44,14 @@ def light_complexity(lights) -> int:
     return complexity
 
 
-@dataclass(frozen=True)
-class ViewLights:
-    """The switched-on lights as arrays in view space, for the kernels.
+class ViewLights(NamedTuple):
+    """The switched-on lights as arrays in view space; the kernels take it whole.
 
+    complexity : VTK's light complexity of the whole set (:func:`light_complexity`).
     direction (L, 3) unit vectors the light travels along; position (L, 3); colour (L, 3)
     = colour × intensity; positional (L,) bool; cos_cone (L,) cosine of the cone
     half-angle (−2 = no cone); exponent (L,); attenuation (L, 3) constant, linear,
-    quadratic.
+    quadratic; gl_ambient, gl_diffuse, gl_specular (L, 3): the OpenGL model's colours.
     """
 
     complexity: int
@@ -62,6 +62,9 @@ class ViewLights:
     cos_cone: np.ndarray
     exponent: np.ndarray
     attenuation: np.ndarray
+    gl_ambient: np.ndarray
+    gl_diffuse: np.ndarray
+    gl_specular: np.ndarray
 
 
 def light_to_view(light, camera, world_to_view: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -71,8 +74,12 @@ def light_to_view(light, camera, world_to_view: np.ndarray) -> tuple[np.ndarray,
     - headlight: at the eye, aimed at the focal point, so (0, 0, 0) → (0, 0, −d);
     - camera light: (0, 0, 1) is the eye and (0, 0, 0) the focal point, in units of the
       camera distance d, i.e. view = d·(x, y, z − 1) (VTK's light transform
-      inverse(view)·scale(d)·translate(0, 0, −1)).
+      inverse(view)·scale(d)·translate(0, 0, −1));
+    - eye light: already in view (eye) coordinates, as OpenGL keeps a light given right
+      after glLoadIdentity.
     """
+    if light.kind == "eye":
+        return np.asarray(light.position, dtype=np.float64), np.asarray(light.focal_point, dtype=np.float64)
     d = float(np.linalg.norm(np.subtract(camera.position, camera.focal_point)))
     if light.kind == "scene":
         pos = np.append(light.position, 1.0) @ world_to_view
@@ -90,13 +97,17 @@ def view_lights(lights, camera, world_to_view: np.ndarray) -> ViewLights:
     n = len(on)
     out = dict(direction=np.zeros((n, 3)), position=np.zeros((n, 3)), colour=np.zeros((n, 3)),
                positional=np.zeros(n, np.bool_), cos_cone=np.full(n, -2.0), exponent=np.zeros(n),
-               attenuation=np.zeros((n, 3)))
+               attenuation=np.zeros((n, 3)), gl_ambient=np.zeros((n, 3)), gl_diffuse=np.zeros((n, 3)),
+               gl_specular=np.zeros((n, 3)))
     for i, light in enumerate(on):
         pos, foc = light_to_view(light, camera, world_to_view)
         direction = foc - pos
         out["direction"][i] = direction / np.linalg.norm(direction)
         out["position"][i] = pos
-        out["colour"][i] = np.asarray(light.color) * light.intensity
+        out["colour"][i] = light.colour
+        out["gl_ambient"][i] = light.ambient_color
+        out["gl_diffuse"][i] = light.gl_diffuse
+        out["gl_specular"][i] = light.gl_specular
         out["positional"][i] = light.positional
         if light.positional and light.cone_angle < 90.0:
             out["cos_cone"][i] = math.cos(math.radians(light.cone_angle))
@@ -113,14 +124,15 @@ def reflect_dot(lx, ly, lz, n, vx, vy, vz):
 
 
 @njit(cache=True, inline="always")
-def vtk_lighting(n, p, complexity, amb, dif, spe, power,
-                 l_dir, l_pos, l_col, l_positional, l_cos_cone, l_exponent, l_att, out):
+def vtk_lighting(n, p, complexity, amb, dif, spe, power, lights, out):
     """VTK's colour at one fragment (the scalar kernel); writes linear RGB into ``out``.
 
     n : unit normal on the viewer's side (view space). p : fragment position (view
     space). amb, dif, spe : Ka·Ca, Kd·Cd, Ks·Cs (linear RGB). power : specular power.
-    Lights as in :class:`ViewLights`. Written with scalars only: it runs per pixel.
+    lights : :class:`ViewLights`. Written with scalars only: it runs per pixel.
     """
+    l_dir, l_pos, l_col, l_positional = lights.direction, lights.position, lights.colour, lights.positional
+    l_cos_cone, l_exponent, l_att = lights.cos_cone, lights.exponent, lights.attenuation
     if complexity == UNLIT:
         for c in range(3):
             out[c] = amb[c] + dif[c]

@@ -9,6 +9,7 @@ the z-buffer (:mod:`renderer.raster`), 7. shading (:mod:`renderer.shading`,
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -17,10 +18,12 @@ from renderer.camera import clipping_range, view_to_clip, world_to_view
 from renderer.clip import clip_triangles
 from renderer.lighting import UNLIT, view_lights
 from renderer.raster import rasterize_triangles
-from renderer.shading import shade, to_8bit
+from renderer.shading import (FACE_COLOUR, TEXTBOOK_PIXEL, VERTEX_COLOUR, VTK_FLAT, VTK_SMOOTH, Fragments,
+                               ObjectTable, shade, to_8bit)
+from renderer.textbook_lighting import CLASSIC, OPENGL, light_faces, light_vertices
 from renderer.transform import normal_matrix, transform_points
 from renderer.window import clip_to_window, window_rows_to_image_rows
-from renderer.workspace import thread_workspace
+from renderer.workspace import empty, thread_workspace
 
 
 @dataclass(frozen=True)
@@ -28,21 +31,22 @@ class RenderOptions:
     """Choices a lesson can change; the defaults are what VTK does.
 
     fill_rule : "top-left" (OpenGL/llvmpipe) or "bottom-right" (deliberately wrong).
-    interpolation : "perspective" (correct, GPUs) or "screen" (linear in screen space,
-        as the course's scanline slides do), for positions and normals.
+    interpolation : None (the scene's ``[render] interpolation``), "perspective"
+        (correct, GPUs) or "screen" (linear in screen space, as the course's scanline
+        slides do), for colours, positions and normals.
     """
 
     fill_rule: str = "top-left"
-    interpolation: str = "perspective"
+    interpolation: str | None = None
 
 
-@dataclass
-class SceneGeometry:
+class SceneGeometry(NamedTuple):
     """Every object's vertices after stages 1–3 and its triangles, concatenated in draw order.
 
     verts_view (N, 3) view-space positions; verts_clip (N, 4) clip-space positions;
     normals_view (N, 3) view-space vertex normals, unnormalised (zeros when the object has
-    none); triangles (T, 3) indices into those rows; tri_object (T,) each triangle's object.
+    none); triangles (T, 3) indices into those rows; tri_object (T,) each triangle's
+    object; vert_object (N,) each vertex's object.
     """
 
     verts_view: np.ndarray
@@ -50,11 +54,12 @@ class SceneGeometry:
     normals_view: np.ndarray
     triangles: np.ndarray
     tri_object: np.ndarray
+    vert_object: np.ndarray
 
 
 def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray) -> SceneGeometry:
     """Stages 1–3 for every object: model → world → view → clip, vertex by vertex."""
-    views, clips, normals, tris, owners = [], [], [], [], []
+    views, clips, normals, tris, owners, vert_owners = [], [], [], [], [], []
     offset = 0
     for i, obj in enumerate(scene.objects):
         model_to_view = obj.model_to_world @ world_to_view_m
@@ -67,24 +72,68 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
             normals.append(np.zeros((obj.mesh.n_points, 3)))
         tris.append(obj.mesh.triangles + offset)
         owners.append(np.full(obj.mesh.n_triangles, i, np.int64))
+        vert_owners.append(np.full(obj.mesh.n_points, i, np.int64))
         offset += obj.mesh.n_points
     return SceneGeometry(np.ascontiguousarray(np.concatenate(views)), np.concatenate(clips),
-                         np.concatenate(normals), np.concatenate(tris), np.concatenate(owners))
+                         np.concatenate(normals), np.concatenate(tris), np.concatenate(owners),
+                         np.concatenate(vert_owners))
 
 
-def material_arrays(scene, complexity: int):
-    """Per-object arrays for the shading kernel: smooth flag, complexity, Ka·C, Kd·C, Ks·Cs, power."""
-    smooth, comp, amb, dif, spe, power = [], [], [], [], [], []
+MODEL_CODES = {"vtk": 0, "opengl": OPENGL, "classic": CLASSIC}
+
+
+def object_kind(obj) -> int:
+    """How the shading kernel treats an object: by model, shading and whether it has normals."""
+    smooth = obj.shading != "flat" and obj.mesh.point_normals is not None
+    if obj.material.model == "vtk":
+        return VTK_SMOOTH if smooth else VTK_FLAT
+    if not smooth:
+        return FACE_COLOUR
+    return VERTEX_COLOUR if obj.shading == "gouraud" else TEXTBOOK_PIXEL
+
+
+def object_table(scene, complexity: int) -> ObjectTable:
+    """Per-object shading data for the kernels.
+
+    amb, dif, spe, power by model — vtk: Ka·C, Kd·C, Ks·Cs, specular power; opengl: the
+    material's ambient, diffuse and specular colours and its shininess; classic: Ka·O,
+    Kd·O, Ks·(1, 1, 1), n.
+    """
+    kind, model, comp, amb, dif, spe, power = [], [], [], [], [], [], []
     for obj in scene.objects:
         m = obj.material
-        smooth.append(obj.shading != "flat" and obj.mesh.point_normals is not None)
+        kind.append(object_kind(obj))
+        model.append(MODEL_CODES[m.model])
         comp.append(complexity if m.lighting else UNLIT)
-        amb.append(m.ambient * np.asarray(m.color))
-        dif.append(m.diffuse * np.asarray(m.color))
-        spe.append(m.specular * np.asarray(m.effective_specular_color))
-        power.append(m.specular_power)
-    return (np.array(smooth, np.bool_), np.array(comp, np.int64), np.array(amb), np.array(dif), np.array(spe),
-            np.array(power, np.float64))
+        colour = np.asarray(m.color)
+        if m.model == "opengl":
+            amb.append(m.gl_ambient), dif.append(m.gl_diffuse), spe.append(m.gl_specular)
+            power.append(m.shininess)
+        elif m.model == "classic":
+            amb.append(m.ambient * colour), dif.append(m.diffuse * colour), spe.append(np.full(3, m.specular))
+            power.append(m.specular_power)
+        else:
+            amb.append(m.ambient * colour), dif.append(m.diffuse * colour)
+            spe.append(m.specular * np.asarray(m.effective_specular_color))
+            power.append(m.specular_power)
+    r = scene.render
+    return ObjectTable(np.array(kind, np.int64), np.array(model, np.int64), np.array(comp, np.int64),
+                       np.array(amb, np.float64), np.array(dif, np.float64), np.array(spe, np.float64),
+                       np.array(power, np.float64), np.asarray(r.global_ambient, np.float64),
+                       np.asarray(r.ambient, np.float64), bool(r.local_viewer))
+
+
+def textbook_colours(geo: SceneGeometry, objs: ObjectTable, lights, ws=None):
+    """Lit colours per vertex (Gouraud) and per triangle (flat) for the textbook models."""
+    vert_colour = empty(ws, "shade.vert_colour", (len(geo.verts_view), 3))
+    face_colour = empty(ws, "shade.face_colour", (len(geo.triangles), 3))
+    if (objs.kind == VERTEX_COLOUR).any():
+        light_vertices(geo.verts_view, geo.normals_view, geo.vert_object, objs.model, objs.amb, objs.dif, objs.spe,
+                       objs.power, objs.global_ambient, objs.local_viewer, objs.ambient_light, lights, vert_colour)
+    if (objs.kind == FACE_COLOUR).any():
+        light_faces(geo.verts_view, geo.triangles, geo.tri_object, objs.model, objs.amb, objs.dif, objs.spe,
+                    objs.power, objs.global_ambient, objs.local_viewer, objs.ambient_light, lights, face_colour)
+    return vert_colour, face_colour
 
 
 def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
@@ -112,12 +161,12 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
                                                         ws=ws)
 
     lights = view_lights(scene.lights, cam, w2v)
-    smooth, comp, amb, dif, spe, power = material_arrays(scene, lights.complexity)
+    objs = object_table(scene, lights.complexity)
+    vert_colour, face_colour = textbook_colours(geo, objs, lights, ws)
+    interpolation = options.interpolation or scene.render.interpolation
     rgb = np.empty((height, width, 3), np.uint8)
-    shade(tri_index, bary, front, tri_clip, clip_bary, clip_source, geo.triangles, geo.verts_view, geo.normals_view,
-          geo.tri_object, smooth, comp, amb, dif, spe, power, bool(cam.parallel),
-          options.interpolation == "perspective", lights.direction, lights.position, lights.colour,
-          lights.positional, lights.cos_cone, lights.exponent, lights.attenuation,
-          to_8bit(np.asarray(scene.image.background)), rgb)
+    shade(Fragments(tri_index, bary, front, tri_clip, clip_bary, clip_source), geo, objs, lights, vert_colour,
+          face_colour, bool(cam.parallel), interpolation == "perspective", to_8bit(np.asarray(scene.image.background)),
+          rgb)
     return Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth.copy()),
                  coverage=window_rows_to_image_rows(tri_index >= 0))

@@ -15,15 +15,22 @@ Normals by shading mode (VTK's OpenGL2 rules):
   the (unnormalised) view-space vertex normals, normalised, negated on back faces
   (two-sided lighting). VTK has no per-vertex lighting, so both are per-pixel here.
 - without point normals every mode falls back to ``flat``.
+
+The textbook models (``model = "opengl" | "classic"``, :mod:`renderer.textbook_lighting`)
+light per triangle (flat, at the centroid), per vertex with the colours interpolated
+(gouraud) or per pixel with the interpolated normal (phong); their normals are used as
+given, never flipped.
 """
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit, prange
 
 from renderer.lighting import vtk_lighting
+from renderer.textbook_lighting import textbook_lighting
 
 
 @njit(cache=True, inline="always")
@@ -79,49 +86,115 @@ def plane_normal(a, b, c, n):
         n[0], n[1], n[2] = n[0] / length, n[1] / length, n[2] / length
 
 
-@njit(cache=True, parallel=True)
-def shade(tri_index, bary, front, tri_clip, clip_bary, clip_source, triangles, verts_view, normals_view,
-          tri_object, obj_smooth, obj_complexity, obj_amb, obj_dif, obj_spe, obj_power, parallel_camera, perspective,
-          l_dir, l_pos, l_col, l_positional, l_cos_cone, l_exponent, l_att, background, rgb):
-    """Light every covered pixel and store 8-bit RGB (the loop kernel).
+# How an object is shaded (ObjectTable.kind), chosen once per object in renderer.pipeline.
+VTK_FLAT, VTK_SMOOTH, FACE_COLOUR, VERTEX_COLOUR, TEXTBOOK_PIXEL = 0, 1, 2, 3, 4
 
+
+class Fragments(NamedTuple):
+    """The visibility buffer and the clipped triangles it points into (window rows, y up).
+
+    tri_index (H, W) clipped triangle per pixel (−1 = empty); bary (H, W, 2) its
+    screen-space weights of vertices 1 and 2; front (K,); tri_clip (K, 3, 4); clip_bary
+    (K, 3, 3) weights in the source triangle; clip_source (K,) source triangle.
+    """
+
+    tri_index: np.ndarray
+    bary: np.ndarray
+    front: np.ndarray
+    tri_clip: np.ndarray
+    clip_bary: np.ndarray
+    clip_source: np.ndarray
+
+
+class ObjectTable(NamedTuple):
+    """Per-object shading data (index = object) and the scene-wide light-model values.
+
+    kind : VTK_FLAT … TEXTBOOK_PIXEL. model : 0 vtk, 1 opengl, 2 classic.
+    complexity : VTK light complexity (0 when the object's lighting is off).
+    amb, dif, spe (O, 3), power (O,): see :func:`renderer.pipeline.object_table`.
+    global_ambient, ambient_light (3,), local_viewer: from the scene's ``[render]``.
+    """
+
+    kind: np.ndarray
+    model: np.ndarray
+    complexity: np.ndarray
+    amb: np.ndarray
+    dif: np.ndarray
+    spe: np.ndarray
+    power: np.ndarray
+    global_ambient: np.ndarray
+    ambient_light: np.ndarray
+    local_viewer: bool
+
+
+@njit(cache=True, inline="always")
+def interpolate(w, a, i0, i1, i2, out):
+    """out = w0·a[i0] + w1·a[i1] + w2·a[i2] for (N, 3) rows."""
+    for c in range(3):
+        out[c] = w[0] * a[i0, c] + w[1] * a[i1, c] + w[2] * a[i2, c]
+
+
+@njit(cache=True, inline="always")
+def normalise(n):
+    length = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+    if length > 0.0:
+        for c in range(3):
+            n[c] /= length
+
+
+@njit(cache=True, parallel=True)
+def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, perspective, background, rgb):
+    """Colour every covered pixel and store 8-bit RGB (the loop kernel).
+
+    Per object kind: VTK's per-fragment lighting with the plane normal (VTK_FLAT) or the
+    interpolated normal (VTK_SMOOTH); a lit colour per triangle (FACE_COLOUR) or
+    interpolated from lit vertices (VERTEX_COLOUR, Gouraud); the textbook model per
+    pixel with the interpolated normal (TEXTBOOK_PIXEL, Phong).
     Rows are independent and each pixel is written once, so ``prange`` over rows gives
     the same bytes as a serial loop. ``background`` is the 8-bit clear colour.
     """
-    height, width = tri_index.shape
+    height, width = frags.tri_index.shape
+    tris, verts = geo.triangles, geo.verts_view
     for row in prange(height):
         w = np.empty(3)
         n = np.empty(3)
         p = np.empty(3)
         out = np.empty(3)
         for col in range(width):
-            k = tri_index[row, col]
+            k = frags.tri_index[row, col]
             if k < 0:
                 for c in range(3):
                     rgb[row, col, c] = background[c]
                 continue
-            fragment_weights(k, bary[row, col, 0], bary[row, col, 1], tri_clip, clip_bary, perspective, w)
-            s = clip_source[k]
-            o = tri_object[s]
-            i0, i1, i2 = triangles[s, 0], triangles[s, 1], triangles[s, 2]
-            for c in range(3):
-                p[c] = w[0] * verts_view[i0, c] + w[1] * verts_view[i1, c] + w[2] * verts_view[i2, c]
-            if obj_smooth[o]:
+            fragment_weights(k, frags.bary[row, col, 0], frags.bary[row, col, 1], frags.tri_clip, frags.clip_bary,
+                             perspective, w)
+            s = frags.clip_source[k]
+            o = geo.tri_object[s]
+            i0, i1, i2 = tris[s, 0], tris[s, 1], tris[s, 2]
+            kind = objs.kind[o]
+            if kind == FACE_COLOUR:
                 for c in range(3):
-                    n[c] = w[0] * normals_view[i0, c] + w[1] * normals_view[i1, c] + w[2] * normals_view[i2, c]
-                length = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
-                if length > 0.0:
-                    for c in range(3):
-                        n[c] /= length
-                if not front[k]:
-                    for c in range(3):
-                        n[c] = -n[c]
+                    out[c] = face_colour[s, c]
+            elif kind == VERTEX_COLOUR:
+                interpolate(w, vert_colour, i0, i1, i2, out)
             else:
-                plane_normal(verts_view[i0], verts_view[i1], verts_view[i2], n)
-                if (n[2] < 0.0) if parallel_camera else (n[0] * p[0] + n[1] * p[1] + n[2] * p[2] > 0.0):
-                    for c in range(3):
-                        n[c] = -n[c]
-            vtk_lighting(n, p, obj_complexity[o], obj_amb[o], obj_dif[o], obj_spe[o], obj_power[o],
-                         l_dir, l_pos, l_col, l_positional, l_cos_cone, l_exponent, l_att, out)
+                interpolate(w, verts, i0, i1, i2, p)
+                if kind == VTK_FLAT:
+                    plane_normal(verts[i0], verts[i1], verts[i2], n)
+                    if (n[2] < 0.0) if parallel_camera else (n[0] * p[0] + n[1] * p[1] + n[2] * p[2] > 0.0):
+                        for c in range(3):
+                            n[c] = -n[c]
+                else:
+                    interpolate(w, geo.normals_view, i0, i1, i2, n)
+                    normalise(n)
+                    if kind == VTK_SMOOTH and not frags.front[k]:
+                        for c in range(3):
+                            n[c] = -n[c]
+                if kind == TEXTBOOK_PIXEL:
+                    textbook_lighting(objs.model[o], n, p, objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
+                                      objs.global_ambient, objs.local_viewer, objs.ambient_light, lights, out)
+                else:
+                    vtk_lighting(n, p, objs.complexity[o], objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
+                                 lights, out)
             for c in range(3):
                 rgb[row, col, c] = unorm8(out[c])

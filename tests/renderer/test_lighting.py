@@ -6,7 +6,7 @@ import pytest
 
 from lab.scene import Camera, Light, headlight
 from renderer.camera import world_to_view
-from renderer.lighting import light_complexity, light_to_view, view_lights, vtk_lighting
+from renderer.lighting import ViewLights, light_complexity, light_to_view, view_lights, vtk_lighting
 
 AMB = np.array([0.1, 0.05, 0.02])
 DIF = np.array([0.5, 0.4, 0.3])
@@ -20,11 +20,13 @@ def shade(n, p, complexity, lights, power=1.0):
     direction = get("direction", (0.0, 0.0, -1.0))
     direction /= np.linalg.norm(direction, axis=1, keepdims=True)
     out = np.empty(3)
+    view = ViewLights(complexity, direction, get("position", (0.0, 0.0, 0.0)).reshape(k, 3),
+                      get("colour", (1.0, 1.0, 1.0)).reshape(k, 3),
+                      np.array([li.get("positional", False) for li in lights], np.bool_),
+                      get("cos_cone", -2.0).reshape(k), get("exponent", 1.0).reshape(k),
+                      get("attenuation", (1.0, 0.0, 0.0)).reshape(k, 3), *(np.zeros((k, 3)),) * 3)
     vtk_lighting(np.asarray(n, np.float64), np.asarray(p, np.float64), complexity, AMB, DIF, SPE, float(power),
-                 direction, get("position", (0.0, 0.0, 0.0)).reshape(k, 3), get("colour", (1.0, 1.0, 1.0)).reshape(k, 3),
-                 np.array([li.get("positional", False) for li in lights], np.bool_),
-                 get("cos_cone", -2.0).reshape(k), get("exponent", 1.0).reshape(k),
-                 get("attenuation", (1.0, 0.0, 0.0)).reshape(k, 3), out)
+                 view, out)
     return out
 
 

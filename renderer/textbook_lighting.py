@@ -1,0 +1,149 @@
+"""The textbook's reflection models, in view space: fixed-function OpenGL and the course's.
+
+Both take a unit normal ``n`` *as given* (no two-sided flip: OpenGL's default
+``GL_LIGHT_MODEL_TWO_SIDE`` is off, and in the course a face turned away from the light
+gets ambient only), a view-space point ``p`` and the switched-on lights
+(:class:`renderer.lighting.ViewLights`). ``L`` is the unit vector from the point toward
+the light: ``−direction`` for a directional light, ``normalize(position − p)`` for a
+point light. Positional lights are attenuated by ``1/(a0 + a1·d + a2·d²)`` and, inside a
+spot cone, weighted by ``(−L·direction)^exponent`` (zero outside). Results are clamped to
+0..1 per channel, as OpenGL clamps a lit vertex colour before interpolating it.
+
+- **opengl** (:func:`opengl_lighting`; OpenGL 1.x specification §2.14.1, the textbook's
+  chapter 17): ``c = Ga·Ma + Σ att·spot·(La·Ma + max(n·L, 0)·Ld·Md
+  + [n·L > 0]·max(n·H, 0)^shininess·Ls·Ms)`` with Blinn's half vector
+  ``H = normalize(L + V)``, ``V = (0, 0, 1)`` (infinite viewer, OpenGL's default) or
+  ``normalize(−p)`` (local viewer). No emission.
+- **classic** (:func:`classic_lighting`; the course's slides):
+  ``I = Ka·O·A + Σ att·spot·[L·N > 0]·(Kd·O·I·(L·N) + Ks·I·max(R·V, 0)^n)``, with
+  ``R = 2(L·N)N − L`` and ``V = normalize(−p)``; specular only where the light reaches
+  the front of the surface.
+
+Material arrays follow :func:`renderer.pipeline.material_arrays`: for opengl
+``amb, dif, spe, power`` = Ma, Md, Ms, shininess; for classic ``Ka·O``, ``Kd·O``,
+``Ks·(1, 1, 1)``, n.
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit, prange
+
+
+@njit(cache=True, inline="always")
+def light_vector(lights, i, p):
+    """(Lx, Ly, Lz, attenuation·spot) for light ``i`` at view-space point ``p``."""
+    if not lights.positional[i]:
+        return -lights.direction[i, 0], -lights.direction[i, 1], -lights.direction[i, 2], 1.0
+    lx, ly, lz = lights.position[i, 0] - p[0], lights.position[i, 1] - p[1], lights.position[i, 2] - p[2]
+    d = math.sqrt(lx * lx + ly * ly + lz * lz)
+    lx, ly, lz = lx / d, ly / d, lz / d
+    a = lights.attenuation[i]
+    att = 1.0 / (a[0] + a[1] * d + a[2] * d * d)
+    if lights.cos_cone[i] > -1.5:
+        c = -(lx * lights.direction[i, 0] + ly * lights.direction[i, 1] + lz * lights.direction[i, 2])
+        att = att * c ** lights.exponent[i] if c >= lights.cos_cone[i] else 0.0
+    return lx, ly, lz, att
+
+
+@njit(cache=True, inline="always")
+def opengl_lighting(n, p, amb, dif, spe, shininess, global_ambient, local_viewer, lights, out):
+    """Fixed-function OpenGL's lit colour at one point (the scalar kernel), clamped to 0..1."""
+    if local_viewer:
+        plen = math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
+        vx, vy, vz = -p[0] / plen, -p[1] / plen, -p[2] / plen
+    else:
+        vx, vy, vz = 0.0, 0.0, 1.0
+    for c in range(3):
+        out[c] = global_ambient[c] * amb[c]
+    for i in range(lights.direction.shape[0]):
+        lx, ly, lz, att = light_vector(lights, i, p)
+        if att == 0.0:
+            continue
+        ndl = n[0] * lx + n[1] * ly + n[2] * lz
+        sf = 0.0
+        if ndl > 0.0:
+            hx, hy, hz = lx + vx, ly + vy, lz + vz
+            hl = math.sqrt(hx * hx + hy * hy + hz * hz)
+            ndh = (n[0] * hx + n[1] * hy + n[2] * hz) / hl if hl > 0.0 else 0.0
+            sf = max(ndh, 0.0) ** shininess
+        df = max(ndl, 0.0)
+        for c in range(3):
+            out[c] += att * (lights.gl_ambient[i, c] * amb[c] + df * lights.gl_diffuse[i, c] * dif[c]
+                             + sf * lights.gl_specular[i, c] * spe[c])
+    for c in range(3):
+        out[c] = min(max(out[c], 0.0), 1.0)
+
+
+@njit(cache=True, inline="always")
+def classic_lighting(n, p, amb, dif, spe, power, ambient_light, lights, out):
+    """The course's ``Ka·O·A + Σ (Kd·O·I·(L·N) + Ks·I·(R·V)^n)`` at one point, clamped to 0..1."""
+    plen = math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
+    vx, vy, vz = -p[0] / plen, -p[1] / plen, -p[2] / plen
+    for c in range(3):
+        out[c] = amb[c] * ambient_light[c]
+    for i in range(lights.direction.shape[0]):
+        lx, ly, lz, att = light_vector(lights, i, p)
+        ndl = n[0] * lx + n[1] * ly + n[2] * lz
+        if att == 0.0 or ndl <= 0.0:
+            continue
+        rx, ry, rz = 2.0 * ndl * n[0] - lx, 2.0 * ndl * n[1] - ly, 2.0 * ndl * n[2] - lz
+        sf = max(rx * vx + ry * vy + rz * vz, 0.0) ** power
+        for c in range(3):
+            out[c] += att * lights.colour[i, c] * (dif[c] * ndl + spe[c] * sf)
+    for c in range(3):
+        out[c] = min(max(out[c], 0.0), 1.0)
+
+
+OPENGL, CLASSIC = 1, 2  # model codes (0 = vtk, in renderer.lighting)
+
+
+@njit(cache=True, inline="always")
+def textbook_lighting(model, n, p, amb, dif, spe, power, global_ambient, local_viewer, ambient_light, lights, out):
+    """Dispatch to :func:`opengl_lighting` or :func:`classic_lighting` by model code."""
+    if model == OPENGL:
+        opengl_lighting(n, p, amb, dif, spe, power, global_ambient, local_viewer, lights, out)
+    else:
+        classic_lighting(n, p, amb, dif, spe, power, ambient_light, lights, out)
+
+
+@njit(cache=True, parallel=True)
+def light_vertices(verts_view, normals_view, vert_object, obj_model, obj_amb, obj_dif, obj_spe, obj_power,
+                   global_ambient, local_viewer, ambient_light, lights, colours):
+    """Gouraud's first half: a lit colour per vertex (the loop kernel), normals normalised.
+
+    Only vertices of objects whose model is opengl or classic are lit; others keep
+    whatever ``colours`` held.
+    """
+    for v in prange(verts_view.shape[0]):
+        o = vert_object[v]
+        if obj_model[o] == 0:
+            continue
+        n = normals_view[v].copy()
+        length = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+        if length > 0.0:
+            n /= length
+        textbook_lighting(obj_model[o], n, verts_view[v], obj_amb[o], obj_dif[o], obj_spe[o], obj_power[o],
+                          global_ambient, local_viewer, ambient_light, lights, colours[v])
+
+
+@njit(cache=True, parallel=True)
+def light_faces(verts_view, triangles, tri_object, obj_model, obj_amb, obj_dif, obj_spe, obj_power,
+                global_ambient, local_viewer, ambient_light, lights, colours):
+    """Flat shading's colour per triangle (the loop kernel): its plane normal
+    (v1 − v0) × (v2 − v0), lit at one representative point, the centroid."""
+    for t in prange(triangles.shape[0]):
+        o = tri_object[t]
+        if obj_model[o] == 0:
+            continue
+        a, b, c = verts_view[triangles[t, 0]], verts_view[triangles[t, 1]], verts_view[triangles[t, 2]]
+        u = b - a
+        w = c - a
+        n = u.copy()
+        n[0], n[1], n[2] = u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]
+        length = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+        if length > 0.0:
+            n /= length
+        centroid = (a + b + c) / 3.0
+        textbook_lighting(obj_model[o], n, centroid, obj_amb[o], obj_dif[o], obj_spe[o], obj_power[o],
+                          global_ambient, local_viewer, ambient_light, lights, colours[t])
