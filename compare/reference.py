@@ -13,6 +13,8 @@ import time
 
 import numpy as np
 
+from compare.textbook_reference import (NATIVE, SHADER, eye_lights, lit_colours, object_reference, paint_unlit,
+                                       phong_shader, replace_light_shader, with_gl_colours)
 from compare.vtk_backend import pyvista
 from lab.frame import Frame
 
@@ -55,14 +57,21 @@ def _actor(pv, obj):
     return actor
 
 
-def _light(light):
+def _light(light, camera):
+    """A vtkLight for a scene light. An "eye" light (view coordinates) becomes a camera
+    light: VTK's camera frame puts the eye at (0, 0, 1) in units of the camera distance d,
+    so view point (x, y, z) is camera-light point (x/d, y/d, z/d + 1)."""
     import vtk
 
     v = vtk.vtkLight()
-    {"scene": v.SetLightTypeToSceneLight, "camera": v.SetLightTypeToCameraLight,
+    position, focal = light.position, light.focal_point
+    if light.kind == "eye":
+        d = float(np.linalg.norm(np.subtract(camera.position, camera.focal_point)))
+        position, focal = (np.asarray(position) / d + (0, 0, 1), np.asarray(focal) / d + (0, 0, 1))
+    {"scene": v.SetLightTypeToSceneLight, "camera": v.SetLightTypeToCameraLight, "eye": v.SetLightTypeToCameraLight,
      "headlight": v.SetLightTypeToHeadlight}[light.kind]()
-    v.SetPosition(*light.position)
-    v.SetFocalPoint(*light.focal_point)
+    v.SetPosition(*position)
+    v.SetFocalPoint(*focal)
     v.SetColor(*light.color)
     v.SetIntensity(light.intensity)
     v.SetPositional(light.positional)
@@ -87,8 +96,13 @@ def _set_camera(renderer, cam):
         renderer.ResetCameraClippingRange()
 
 
-def build_plotter(scene):
-    """A PyVista offscreen plotter holding the scene, ready to render (not yet rendered)."""
+def build_plotter(scene, reference: str | None = None):
+    """A PyVista offscreen plotter holding the scene, ready to render (not yet rendered).
+
+    Objects with a textbook model are drawn as unlit colours lit by
+    :mod:`compare.textbook_reference`, unless ``reference="vtk-native"`` asks for VTK's
+    own shading of every object.
+    """
     pv = pyvista()
     width, height = scene.image.size
     pl = pv.Plotter(off_screen=True, window_size=(width, height), lighting="none")
@@ -96,12 +110,21 @@ def build_plotter(scene):
     pl.disable_anti_aliasing()
     pl.renderer.SetBackground(*scene.image.background)
     pl.renderer.SetTwoSidedLighting(True)
-    for obj in scene.objects:
-        pl.renderer.AddActor(_actor(pv, obj))
+    actors = [_actor(pv, obj) for obj in scene.objects]
+    for actor in actors:
+        pl.renderer.AddActor(actor)
     for light in scene.lights:
-        pl.renderer.AddLight(_light(light))
+        pl.renderer.AddLight(_light(light, scene.camera))
     pl.camera_set = True  # PyVista must not reset the camera on the first render
     _set_camera(pl.renderer, scene.camera)
+    textbook = [(o, a) for o, a in zip(scene.objects, actors) if object_reference(o, reference) != NATIVE]
+    if textbook:
+        lights = with_gl_colours(eye_lights(pl.renderer), scene)
+        for obj, actor in textbook:
+            if object_reference(obj, reference) == SHADER:
+                replace_light_shader(actor, phong_shader(obj, scene, lights))
+            else:
+                paint_unlit(actor, *lit_colours(obj, actor, pl.renderer, scene, lights))
     return pl
 
 
@@ -121,14 +144,14 @@ def read_frame(pl) -> Frame:
     return Frame(rgb=np.ascontiguousarray(rgb), depth=np.ascontiguousarray(depth), coverage=depth < 1.0)
 
 
-def render_reference(scene, timings: dict | None = None) -> Frame:
+def render_reference(scene, timings: dict | None = None, reference: str | None = None) -> Frame:
     """Draw ``scene`` with VTK offscreen and return its :class:`Frame`.
 
     ``timings``, if given, receives ``"reference_ms"``: the time of a *warm* frame, VTK's
     render call plus the read-back of colour and depth, after a first frame that compiles
     the shaders (the plotter's construction is not counted either).
     """
-    pl = build_plotter(scene)
+    pl = build_plotter(scene, reference)
     try:
         if timings is not None:
             pl.ren_win.Render()

@@ -15,6 +15,7 @@ from pathlib import Path
 from compare.images import delta_e_figure, side_by_side_figure, write_png
 from compare.metrics import compare_frames, coverage_masks
 from compare.reference import render_reference
+from compare.textbook_reference import scene_reference
 
 
 def timed_render(scene, warm: bool = True):
@@ -34,6 +35,12 @@ def shading_label(scene) -> str:
     return modes.pop() if len(modes) == 1 else "mixed"
 
 
+def model_label(scene) -> str:
+    """The scene's reflection model, or "mixed" when its objects differ."""
+    models = {o.material.model for o in scene.objects}
+    return models.pop() if len(models) == 1 else "mixed"
+
+
 def write_json(path: Path, data: dict) -> None:
     """Write JSON atomically: a temporary file in the same folder, then a rename."""
     path = Path(path)
@@ -48,23 +55,25 @@ def write_json(path: Path, data: dict) -> None:
         raise
 
 
-def compare_scene(scene, out_dir, name: str | None = None) -> dict:
+def compare_scene(scene, out_dir, name: str | None = None, reference: str | None = None) -> dict:
     """Render ``scene`` both ways, measure, write the five output files; return the metrics.
 
     The metrics dict is what ``metrics.json`` holds (see the README): scene, shading,
     size, delta_e_2000 {mean, median, p95, p99, p999, max}, pixels_over_1,
-    coverage_mismatch, max_channel_diff, ours_ms, reference_ms, and the reference used.
+    coverage_mismatch, max_channel_diff, ours_ms, reference_ms, and the reference used
+    (picked per object by :func:`compare.textbook_reference.object_reference`;
+    ``reference="vtk-native"`` forces VTK's own shading everywhere).
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     ours, ours_ms = timed_render(scene)
     timings: dict = {}
-    ref = render_reference(scene, timings=timings)
+    ref = render_reference(scene, timings=timings, reference=reference)
     metrics, de = compare_frames(ours, ref)
     shared, mismatch = coverage_masks(ours, ref)
     result = {"scene": name or scene.source, "shading": shading_label(scene), "size": list(scene.image.size),
               **metrics, "ours_ms": round(ours_ms, 3), "reference_ms": round(timings["reference_ms"], 3),
-              "reference": "vtk-native"}
+              "model": model_label(scene), "reference": scene_reference(scene, reference)}
     write_png(out / "ours.png", ours.rgb)
     write_png(out / "vtk.png", ref.rgb)
     delta_e_figure(de, mismatch, out / "delta_e.png", shared=shared)
@@ -77,6 +86,6 @@ def compare_scene(scene, out_dir, name: str | None = None) -> dict:
 def summary_line(m: dict) -> str:
     """One line for the terminal: the verdict in numbers."""
     de = m["delta_e_2000"]
-    return (f"{m['scene']}: ΔE2000 mean {de['mean']:.3f}, p99.9 {de['p999']:.2f}, max {de['max']:.2f}; "
+    return (f"{m['scene']} [{m['model']}/{m['shading']} vs {m['reference']}]: ΔE2000 mean {de['mean']:.3f}, p99.9 {de['p999']:.2f}, max {de['max']:.2f}; "
             f"over 1: {100 * m['pixels_over_1']:.3f} %; coverage mismatch {100 * m['coverage_mismatch']:.3f} %; "
             f"max channel diff {m['max_channel_diff']}; ours {m['ours_ms']:.1f} ms, VTK {m['reference_ms']:.1f} ms")

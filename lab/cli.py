@@ -10,7 +10,7 @@ import sys
 from pathlib import Path
 
 from lab.loading import SCENES_DIR, SceneError, load_scene
-from lab.scene import SHADINGS
+from lab.scene import MODELS, SHADINGS
 
 
 class UsageError(Exception):
@@ -32,10 +32,12 @@ def _scene_args(p: argparse.ArgumentParser) -> None:
                                  "such as cube, icosahedron, quad, icosphere:level=3")
     p.add_argument("--shading", choices=SHADINGS, help="override every object's shading")
     p.add_argument("--size", type=_size, metavar="WxH", help="override the image size, e.g. 640x480")
+    p.add_argument("--model", choices=MODELS, help="override every object's reflection model: vtk (VTK's own), "
+                                                   "opengl (fixed-function OpenGL) or classic (the course's)")
 
 
 def _load(args):
-    return load_scene(args.scene).with_overrides(shading=args.shading, size=args.size)
+    return load_scene(args.scene).with_overrides(shading=args.shading, size=args.size, model=args.model)
 
 
 def _scene_name(spec: str) -> str:
@@ -77,7 +79,7 @@ def cmd_compare(args) -> int:
 
     scene = _load(args)
     m = compare_scene(scene, _output(str(Path(args.out) / "metrics.json"), args.scene).parent,
-                      name=_scene_name(args.scene))
+                      name=_scene_name(args.scene), reference=args.reference)
     print(summary_line(m))
     print(f"wrote {args.out}/ (ours.png, vtk.png, delta_e.png, side_by_side.png, metrics.json)")
     if args.fail_above is not None and m["delta_e_2000"]["p999"] > args.fail_above:
@@ -144,6 +146,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the outputs (created if missing)")
     p.add_argument("--fail-above", type=float, metavar="DE",
                    help="exit 1 when the 99.9th percentile ΔE2000 exceeds DE")
+    p.add_argument("--reference", choices=["vtk-native"],
+                   help="force VTK's own shading for every object (by default textbook models are checked "
+                        "against colours lit in numpy or a replaced VTK shader); shows how far textbook Gouraud "
+                        "is from VTK's per-pixel 'Gouraud'")
     p.set_defaults(func=cmd_compare)
 
     p = sub.add_parser("scenes", help="list the preset scenes")
