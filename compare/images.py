@@ -206,8 +206,11 @@ def metrics_lines(metrics: dict) -> list[str]:
 def side_by_side_figure(ours_rgb: np.ndarray, ref_rgb: np.ndarray, de: np.ndarray,
                         mismatch_mask: np.ndarray, metrics: dict,
                         path: str | os.PathLike, title: str | None = None, *,
-                        shared: np.ndarray | None = None, vmax: float = VMAX) -> None:
+                        shared: np.ndarray | None = None, vmax: float = VMAX,
+                        labels: tuple[str, str] = ("scanlab (ours)", "VTK (reference)")) -> None:
     """Write "scanlab (ours)" | "VTK (reference)" | "ΔE2000" as one PNG, atomically.
+
+    ``labels`` renames the two image panels (a lesson may compare two of our renders).
 
     The figures of ``metrics`` (see :func:`metrics_lines`) are printed underneath.
 
@@ -237,8 +240,8 @@ def side_by_side_figure(ours_rgb: np.ndarray, ref_rgb: np.ndarray, de: np.ndarra
         canvas.text(canvas.width / 2, 10, title, ha="center", fontsize=13,
                     fontweight="bold")
     x = [left + i * (iw + gap) for i in range(3)]
-    _show_rgb(canvas.axes(x[0], top, iw, ih), ours_rgb, "scanlab (ours)")
-    _show_rgb(canvas.axes(x[1], top, iw, ih), ref_rgb, "VTK (reference)")
+    _show_rgb(canvas.axes(x[0], top, iw, ih), ours_rgb, labels[0])
+    _show_rgb(canvas.axes(x[1], top, iw, ih), ref_rgb, labels[1])
     legend = _show_delta_e(canvas.axes(x[2], top, iw, ih),
                            canvas.axes(x[2] + iw + bar_gap, top, bar_w, ih),
                            de, mismatch_mask, shared, vmax, "ΔE2000")

@@ -29,7 +29,31 @@ def _polydata(pv, mesh):
     return poly
 
 
-def _actor(pv, obj):
+def vtk_material(obj, scene) -> dict:
+    """The vtkProperty values that draw ``obj``'s material with VTK's own lighting.
+
+    For the vtk model, the scene's values. For a textbook model (``--reference
+    vtk-native``), VTK's nearest equivalent, so that what remains is the difference of
+    the models, not of the numbers: opengl's ambient ``(Ga + ΣLa)·Ma`` becomes VTK's
+    ambient colour, ``Md`` and ``Ms`` its diffuse and specular colours (coefficients 1),
+    and shininess/4 its specular power (Phong's (r·v)^p is close to Blinn's (n·h)^(4p));
+    the classic model maps one to one (``O·A``, Ka; O, Kd; white, Ks; n).
+    """
+    m = obj.material
+    if m.model == "opengl":
+        la = sum((np.asarray(li.ambient_color) for li in scene.lights if li.on), np.zeros(3))
+        amb = np.clip((np.asarray(scene.render.global_ambient) + la) * m.gl_ambient, 0.0, 1.0)
+        return dict(ambient_color=amb, ambient=1.0, diffuse_color=m.gl_diffuse, diffuse=1.0,
+                    specular_color=m.gl_specular, specular=1.0, power=m.shininess / 4.0)
+    if m.model == "classic":
+        return dict(ambient_color=np.asarray(m.color) * np.asarray(scene.render.ambient), ambient=m.ambient,
+                    diffuse_color=np.asarray(m.color), diffuse=m.diffuse, specular_color=np.ones(3),
+                    specular=m.specular, power=m.specular_power)
+    return dict(ambient_color=m.color, ambient=m.ambient, diffuse_color=m.color, diffuse=m.diffuse,
+                specular_color=m.effective_specular_color, specular=m.specular, power=m.specular_power)
+
+
+def _actor(pv, obj, scene):
     import vtk
 
     mapper = vtk.vtkPolyDataMapper()
@@ -43,14 +67,14 @@ def _actor(pv, obj):
         for j in range(4):
             user.SetElement(i, j, float(column[i, j]))
     actor.SetUserMatrix(user)
-    m, prop = obj.material, actor.GetProperty()
-    prop.SetColor(*m.color)  # ambient, diffuse and specular colours
-    if m.specular_color is not None:
-        prop.SetSpecularColor(*m.specular_color)
-    prop.SetAmbient(m.ambient)
-    prop.SetDiffuse(m.diffuse)
-    prop.SetSpecular(m.specular)
-    prop.SetSpecularPower(m.specular_power)
+    m, prop, v = obj.material, actor.GetProperty(), vtk_material(obj, scene)
+    prop.SetAmbientColor(*v["ambient_color"])
+    prop.SetDiffuseColor(*v["diffuse_color"])
+    prop.SetSpecularColor(*v["specular_color"])
+    prop.SetAmbient(v["ambient"])
+    prop.SetDiffuse(v["diffuse"])
+    prop.SetSpecular(v["specular"])
+    prop.SetSpecularPower(v["power"])
     prop.SetOpacity(m.opacity)
     prop.SetInterpolation(INTERPOLATION[obj.shading])
     prop.SetLighting(m.lighting)
@@ -110,7 +134,7 @@ def build_plotter(scene, reference: str | None = None):
     pl.disable_anti_aliasing()
     pl.renderer.SetBackground(*scene.image.background)
     pl.renderer.SetTwoSidedLighting(True)
-    actors = [_actor(pv, obj) for obj in scene.objects]
+    actors = [_actor(pv, obj, scene) for obj in scene.objects]
     for actor in actors:
         pl.renderer.AddActor(actor)
     for light in scene.lights:

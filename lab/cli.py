@@ -122,6 +122,16 @@ def cmd_demo(args) -> int:
     return run_demo(Path(args.out), args.scenes or preset_names())
 
 
+def cmd_lessons_figures(args) -> int:
+    from lessons.figures import build_figures
+
+    out = Path(args.out)
+    results = build_figures(out)
+    for name in results:
+        print(f"wrote {out / (name + '.png')}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="scanlab",
@@ -159,6 +169,12 @@ def build_parser() -> argparse.ArgumentParser:
     _scene_args(p)
     p.add_argument("--repeat", type=int, default=30, help="timed frames per renderer (default 30)")
     p.set_defaults(func=cmd_bench)
+
+    p = sub.add_parser("lessons", help="lesson material: `scanlab lessons figures` makes the lesson figures")
+    lsub = p.add_subparsers(dest="action", required=True, metavar="ACTION")
+    q = lsub.add_parser("figures", help="render the measured figures the lessons show")
+    q.add_argument("--out", default="lessons/figures", metavar="DIR", help="output folder (default lessons/figures)")
+    q.set_defaults(func=cmd_lessons_figures)
 
     p = sub.add_parser("demo", help="compare every preset scene and build a page of side-by-side panels")
     p.add_argument("--out", default="out/demo", metavar="DIR", help="output folder (default out/demo)")

@@ -95,3 +95,10 @@ def test_scenes_lists_every_preset(capsys):
     out = capsys.readouterr().out
     for p in (REPO / "lab" / "scenes").glob("*.toml"):
         assert p.stem in out
+
+
+@pytest.mark.parametrize("preset", sorted(p.stem for p in (REPO / "lab" / "scenes").glob("*.toml")))
+def test_every_preset_compares_from_the_command_line(preset, tmp_path, capsys):
+    """scanlab compare PRESET exits 0 with --fail-above 1 (its p99.9 ΔE2000 stays under one JND)."""
+    assert main(["compare", preset, "--out", str(tmp_path), "--fail-above", "1.0"]) == 0
+    assert json.loads((tmp_path / "metrics.json").read_text())["scene"] == preset

@@ -1,0 +1,66 @@
+"""Figures the lessons show, each made from measured renders (``scanlab lessons figures``).
+
+- ``interpolation.png``: Gouraud colours on a floor seen at a grazing angle, interpolated
+  linearly in screen space (the course's scanline way) beside perspective-correct
+  interpolation (what GPUs and VTK do), with the ΔE2000 map between them.
+- ``gouraud-vs-vtk.png``: the textbook's OpenGL Gouraud sphere beside VTK's per-pixel
+  "Gouraud" with the nearest equivalent material: the difference sits on the highlights.
+"""
+from __future__ import annotations
+
+import dataclasses
+import shutil
+from pathlib import Path
+
+from compare.images import side_by_side_figure
+from compare.metrics import compare_frames, coverage_masks
+from lab.loading import load_scene
+from renderer import RenderOptions, render
+
+
+def facing(scene):
+    """The same scene with every object turned to face the camera (no rotation: the quad faces +z)."""
+    from renderer.transform import model_matrix
+
+    objs = tuple(dataclasses.replace(o, model_to_world=model_matrix(translate=(0.0, 0.3, -1.0)))
+                 for o in scene.objects)
+    cam = dataclasses.replace(scene.camera, position=(0.0, 0.3, 3.0), focal_point=(0.0, 0.3, 0.0))
+    return dataclasses.replace(scene, objects=objs, camera=cam)
+
+
+def interpolation_metrics(scene) -> tuple[dict, tuple]:
+    """Metrics of screen-linear against perspective-correct interpolation of one scene."""
+    screen = render(scene, RenderOptions(interpolation="screen"))
+    perspective = render(scene, RenderOptions(interpolation="perspective"))
+    metrics, de = compare_frames(screen, perspective)
+    return metrics, (screen, perspective, de)
+
+
+def interpolation_figure(out: Path) -> dict:
+    """Write ``interpolation.png``; return the metrics for the tilted and the facing plane."""
+    tilted = load_scene("tilted-plane")
+    m_tilted, (screen, perspective, de) = interpolation_metrics(tilted)
+    m_facing, _ = interpolation_metrics(facing(tilted))
+    shared, mismatch = coverage_masks(screen, perspective)
+    side_by_side_figure(screen.rgb, perspective.rgb, de, mismatch, m_tilted, out / "interpolation.png",
+                        title="Gouraud colours on a tilted floor", shared=shared,
+                        labels=("screen-linear (course scanline)", "perspective-correct (GPU, VTK)"))
+    return {"tilted": m_tilted, "facing": m_facing}
+
+
+def gouraud_vs_vtk_figure(out: Path) -> dict:
+    """Write ``gouraud-vs-vtk.png`` (textbook sphere, OpenGL Gouraud vs VTK native)."""
+    from compare.report import compare_scene
+
+    scene = load_scene("textbook-sphere").with_overrides(model="opengl", shading="gouraud")
+    work = out / ".gouraud-vs-vtk"
+    m = compare_scene(scene, work, name="textbook-sphere: OpenGL Gouraud vs VTK", reference="vtk-native")
+    shutil.copyfile(work / "side_by_side.png", out / "gouraud-vs-vtk.png")
+    shutil.rmtree(work)
+    return m
+
+
+def build_figures(out: Path) -> dict:
+    """Make every lesson figure into ``out``; returns their metrics by figure name."""
+    out.mkdir(parents=True, exist_ok=True)
+    return {"interpolation": interpolation_figure(out), "gouraud-vs-vtk": gouraud_vs_vtk_figure(out)}
