@@ -122,6 +122,39 @@ def cmd_demo(args) -> int:
     return run_demo(Path(args.out), args.scenes or preset_names())
 
 
+def cmd_export(args) -> int:
+    from lab.meshfiles import MeshFileError, write_mesh
+
+    scene = load_scene(args.scene)
+    out = _output(args.output, args.scene)
+    mesh = scene.world_mesh()
+    try:
+        write_mesh(mesh, out)
+    except MeshFileError as exc:
+        raise UsageError(str(exc)) from None
+    normals = "with point normals" if mesh.point_normals is not None else "no point normals"
+    print(f"wrote {out} ({mesh.n_points} points, {mesh.n_triangles} triangles, {normals})")
+    return 0
+
+
+def cmd_info(args) -> int:
+    from lab.measure import mesh_summary
+
+    scene = load_scene(args.scene)
+    rows = [(o.name, mesh_summary(o.world_mesh())) for o in scene.objects]
+    if len(rows) > 1:
+        rows.append(("scene", mesh_summary(scene.world_mesh())))
+    print(f"{scene.source}: {len(scene.objects)} object(s)")
+    for name, m in rows:
+        b = m["bounds"]
+        print(f"  {name}: {m['points']} points, {m['triangles']} triangles, "
+              f"{'point normals' if m['normals'] else 'no point normals'}")
+        print(f"    bounds x [{b[0]:.6g}, {b[1]:.6g}] y [{b[2]:.6g}, {b[3]:.6g}] z [{b[4]:.6g}, {b[5]:.6g}]")
+        print(f"    area {m['area']:.10g}, volume {m['volume']:.10g}, "
+              f"closed and consistently oriented: {'yes' if m['closed_and_oriented'] else 'no'}")
+    return 0
+
+
 def cmd_lessons_figures(args) -> int:
     from lessons.figures import build_figures
 
@@ -169,6 +202,17 @@ def build_parser() -> argparse.ArgumentParser:
     _scene_args(p)
     p.add_argument("--repeat", type=int, default=30, help="timed frames per renderer (default 30)")
     p.set_defaults(func=cmd_bench)
+
+    p = sub.add_parser("export", help="write the exact triangles both renderers draw (.ply .obj .stl .vtp)",
+                       description="Writes the scene's (or shape's) triangles in world space, with point normals "
+                                   "where the format holds them (PLY, OBJ, VTP; STL has none).")
+    p.add_argument("scene", help="a scene file, preset or built-in shape such as menger:level=3")
+    p.add_argument("-o", "--output", required=True, help="file to write; the suffix picks the format")
+    p.set_defaults(func=cmd_export)
+
+    p = sub.add_parser("info", help="counts, bounds, area, volume and closedness of a scene or shape")
+    p.add_argument("scene", help="a scene file, preset or built-in shape such as cone:segments=24")
+    p.set_defaults(func=cmd_info)
 
     p = sub.add_parser("lessons", help="lesson material: `scanlab lessons figures` makes the lesson figures")
     lsub = p.add_subparsers(dest="action", required=True, metavar="ACTION")

@@ -239,8 +239,9 @@ def make_shape(name, params: dict, where=None) -> Mesh:
         if key not in sig.parameters:
             raise err(f"{name} has no parameter {key!r}; valid: {', '.join(sig.parameters)}")
         default = sig.parameters[key].default
-        if isinstance(default, int) and (not isinstance(value, int) or isinstance(value, bool) or not 0 <= value <= 8):
-            raise err(f"{name}: {key} must be a whole number in 0..8, got {value!r}")
+        lo, hi = shapes.PARAM_RANGES.get((name, key), (0, 8))
+        if isinstance(default, int) and (not isinstance(value, int) or isinstance(value, bool) or not lo <= value <= hi):
+            raise err(f"{name}: {key} must be a whole number in {lo}..{hi}, got {value!r}")
         if isinstance(default, float) and (isinstance(value, bool) or not isinstance(value, (int, float))
                                            or not math.isfinite(value) or value <= 0):
             raise err(f"{name}: {key} must be a positive number, got {value!r}")

@@ -176,6 +176,17 @@ class SceneObject:
     model_to_world: np.ndarray = field(default_factory=lambda: np.eye(4))
     name: str = "object"
 
+    def world_mesh(self) -> Mesh:
+        """The mesh carried to world space: points by ``model_to_world``, normals by its
+        inverse-transpose (renormalised)."""
+        m = self.model_to_world
+        points = self.mesh.points @ m[:3, :3] + m[3, :3]
+        normals = None
+        if self.mesh.point_normals is not None:
+            normals = self.mesh.point_normals @ np.linalg.inv(m[:3, :3]).T
+            normals /= np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
+        return Mesh(points, self.mesh.triangles, normals)
+
     def world_bounds(self) -> np.ndarray:
         """World bounds as VTK's ``vtkProp3D::GetBounds`` gives them.
 
@@ -208,6 +219,16 @@ class Scene:
             return np.array([-1.0, 1.0, -1.0, 1.0, -1.0, 1.0])
         b = np.array([o.world_bounds() for o in self.objects])
         return np.array([b[:, 0].min(), b[:, 1].max(), b[:, 2].min(), b[:, 3].max(), b[:, 4].min(), b[:, 5].max()])
+
+    def world_mesh(self) -> Mesh:
+        """All objects in world space as one mesh, in draw order (normals only if all have them)."""
+        meshes = [o.world_mesh() for o in self.objects]
+        offsets = np.cumsum([0] + [m.n_points for m in meshes[:-1]])
+        normals = None
+        if all(m.point_normals is not None for m in meshes):
+            normals = np.concatenate([m.point_normals for m in meshes])
+        return Mesh(np.concatenate([m.points for m in meshes]),
+                    np.concatenate([m.triangles + off for m, off in zip(meshes, offsets)]), normals)
 
     def with_overrides(self, shading: str | None = None, size: tuple[int, int] | None = None,
                        model: str | None = None) -> "Scene":

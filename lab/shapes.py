@@ -107,4 +107,275 @@ def icosphere(level: int = 2, radius: float = 1.0) -> Mesh:
     return Mesh(pts, tris)
 
 
-SHAPES = {"cube": cube, "quad": quad, "icosahedron": icosahedron, "icosphere": icosphere}
+# The unit cube's corners as (x, y, z) offsets in {0, 1}, point index = x + 2y + 4z (as in
+# cube()), and its six quads counter-clockwise from outside (the same face table as cube()).
+_CUBE_CORNERS = np.array([[x, y, z] for z in (0, 1) for y in (0, 1) for x in (0, 1)], dtype=np.int64)
+_CUBE_QUADS = np.array([
+    (0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5),
+], dtype=np.int64)
+
+# The 20 cells of a 3×3×3 grid that a Menger step keeps: (i, j, k) in {0, 1, 2}³ with at
+# most one coordinate equal to the middle one, 1 (the 6 face centres and the body centre go).
+_MENGER_CELLS = np.array([c for c in np.ndindex(3, 3, 3) if sum(x == 1 for x in c) <= 1], dtype=np.int64)
+
+
+def _quads_to_triangles(quads: np.ndarray) -> np.ndarray:
+    """(F, 4) quads → (2F, 3) triangles (q0, q1, q2), (q0, q2, q3), the two of a quad adjacent."""
+    q = np.asarray(quads, dtype=np.int64).reshape(-1, 4)
+    return np.stack([q[:, [0, 1, 2]], q[:, [0, 2, 3]]], axis=1).reshape(-1, 3)
+
+
+def menger(level: int = 2, keep_internal: int = 0) -> Mesh:
+    """The Menger sponge of ``level``: a cube of side 1 centred at the origin, holes and all.
+
+    Construction
+    ------------
+    Work on the integer grid of step 3^-N (N = ``level``), where the sponge fills
+    [0, 3^N]³. Level 0 is one cell at (0, 0, 0). Each level replaces every cell ``c`` by
+    the 20 cells ``3·c + o`` for the offsets ``o`` in {0, 1, 2}³ having at most one
+    coordinate equal to 1 (the 27 sub-cells less the 6 face centres and the body centre);
+    this is one vectorised step per level, so level N has 20^N cells of side 3^-N.
+
+    Each cell gives the 6 quads of :func:`cube` (counter-clockwise from outside), two
+    triangles each. With ``keep_internal=0`` every face shared by two touching cells
+    (a face inside the solid) is removed: face centres, doubled to integers on the grid,
+    are hashed, and the faces whose centre occurs twice go (the two cells' copies of the
+    face, which have opposite orientations). Points with equal integer coordinates are
+    merged (``np.unique``), so no point is repeated and the remaining surface is closed
+    and consistently oriented. No two cells of the sponge meet along an edge or at a
+    corner only, so the surface is a closed 2-manifold: every edge is used by exactly two
+    triangles, once in each direction (checked for N ≤ 3 in tests/lab/test_shapes.py).
+
+    The remaining surface has area 2·(20/9)^N + 4·(8/9)^N and encloses volume (20/27)^N.
+    With ``keep_internal=1`` all 6·20^N faces stay (area 6·20^N·9^-N; as the doubled faces
+    have opposite orientations the divergence-theorem volume is unchanged). No point
+    normals: the faces are flat.
+
+    Parameters
+    ----------
+    level : recursion depth N ≥ 0; 20^N cells, so memory and time grow twentyfold per
+        level (level 4, 160 000 cells, takes about a second; level 5 would be 3.2 million
+        cells).
+    keep_internal : 0 (default) removes the faces between touching cells, 1 keeps them.
+
+    >>> menger(level=0).n_triangles, menger(level=1).n_triangles
+    (12, 144)
+    """
+    n = int(level)
+    if n < 0:
+        raise ValueError(f"menger: level must be >= 0, got {level!r}")
+    cells = np.zeros((1, 3), dtype=np.int64)                       # lower corners, grid units
+    for _ in range(n):
+        cells = (3 * cells[:, None, :] + _MENGER_CELLS[None, :, :]).reshape(-1, 3)
+
+    quad_offsets = _CUBE_CORNERS[_CUBE_QUADS]                      # (6 faces, 4 corners, 3)
+    face_cell = np.repeat(np.arange(len(cells)), 6)
+    face_kind = np.tile(np.arange(6), len(cells))
+    if not keep_internal:
+        # Twice the face centre is 2·corner + (sum of the quad's offsets) / 2: an integer
+        # point in [0, 2·3^N]³, hashed to one int64.
+        m = 2 * 3 ** n + 1
+        centre2 = 2 * cells[:, None, :] + (quad_offsets.sum(axis=1) // 2)[None, :, :]
+        key = ((centre2[..., 2] * m + centre2[..., 1]) * m + centre2[..., 0]).ravel()
+        _, inverse, counts = np.unique(key, return_inverse=True, return_counts=True)
+        single = counts[inverse.ravel()] == 1
+        face_cell, face_kind = face_cell[single], face_kind[single]
+
+    corners = cells[face_cell][:, None, :] + quad_offsets[face_kind]   # (F, 4, 3) grid points
+    p = 3 ** n + 1
+    key = (corners[..., 2] * p + corners[..., 1]) * p + corners[..., 0]  # z-major, as cube()
+    uniq, inverse = np.unique(key.ravel(), return_inverse=True)
+    grid = np.stack([uniq % p, (uniq // p) % p, uniq // (p * p)], axis=1)
+    points = grid / float(3 ** n) - 0.5
+    return Mesh(points, _quads_to_triangles(inverse.reshape(-1, 4)))
+
+
+def icosahedron_fractal(level: int = 2) -> Mesh:
+    """The textbook's icosahedron flake: 12^level icosahedra, 20·12^level triangles.
+
+    Construction
+    ------------
+    Start with :func:`icosahedron` of circumradius 1 centred at the origin. At each level
+    every icosahedron (centre c, circumradius R) is replaced by 12 copies of itself scaled
+    by s = 1/(1 + φ) (φ the golden ratio), centred at c + (1 − s)·R·v_i for its 12 unit
+    vertex directions v_i. Each copy keeps the parent's orientation, so its vertex in
+    direction v_i is c + (1 − s)·R·v_i + s·R·v_i = c + R·v_i: the copy touches the
+    parent's circumsphere exactly at the parent's vertex, and every copy lies inside the
+    parent's circumscribed ball (so the whole flake lies in the unit ball).
+
+    Neighbouring copies touch. Two copies at adjacent vertices v_i, v_j are translates
+    of each other by d = (1 − s)·R·(v_j − v_i), of length (1 − s)·R·e with e = 2/√(1 + φ²)
+    the edge of the unit-circumradius icosahedron. The direction of an edge is the
+    direction of the midpoint of two other, opposite, edges, at the midradius
+    ρ = φ/√(1 + φ²) of the copy, ρ·s·R. The copies touch when |d| is the sum of their
+    reaches in that direction, |d| = 2·s·R·ρ, i.e. (1 − s)·e = 2·s·ρ, i.e. 1 − s = s·φ,
+    i.e. s = 1/(1 + φ) — the chosen scale. They then share a whole edge (of length s·R·e,
+    perpendicular to d) and nothing more: their interiors lie on either side of the
+    plane through that edge perpendicular to d. (Copies at non-adjacent vertices are
+    farther apart and do not touch.) tests/lab/test_shapes.py checks this numerically.
+
+    The icosahedra are kept as separate closed surfaces: points are not merged, so a
+    shared edge appears once in each of its two icosahedra. The centres array grows
+    twelvefold per level (one vectorised step per level). No point normals (flat faces).
+
+    Parameters
+    ----------
+    level : recursion depth N ≥ 0 (12^N icosahedra).
+
+    >>> icosahedron_fractal(level=1).n_triangles
+    240
+    """
+    n = int(level)
+    if n < 0:
+        raise ValueError(f"icosahedron_fractal: level must be >= 0, got {level!r}")
+    base = icosahedron(1.0)
+    dirs, faces = base.points, base.triangles                      # unit vertex directions
+    s = 1.0 / (1.0 + PHI)
+    centres = np.zeros((1, 3))
+    radius = 1.0
+    for _ in range(n):
+        centres = (centres[:, None, :] + (1.0 - s) * radius * dirs[None, :, :]).reshape(-1, 3)
+        radius *= s
+    points = (centres[:, None, :] + radius * dirs[None, :, :]).reshape(-1, 3)
+    tris = (faces[None, :, :] + 12 * np.arange(len(centres))[:, None, None]).reshape(-1, 3)
+    return Mesh(points, tris)
+
+
+def _ring_angles(segments: int, name: str) -> np.ndarray:
+    n = int(segments)
+    if n < 3:
+        raise ValueError(f"{name}: segments must be >= 3, got {segments!r}")
+    return 2.0 * np.pi * np.arange(n) / n
+
+
+def cylinder(segments: int = 32, radius: float = 0.5, height: float = 1.0) -> Mesh:
+    """A closed cylinder around the z axis, from z = −height/2 to z = +height/2.
+
+    Construction
+    ------------
+    The circle of ``radius`` is approximated by the regular ``segments``-gon with corners
+    at θ_k = 2πk/segments (k = 0 … segments − 1), the first at +x.
+
+    - Side: 2·segments points (a ring at each end) with the radial unit normals
+      (cos θ_k, sin θ_k, 0), shared between neighbouring quads (smooth around, as VTK's
+      cylinder source); quad k joins bottom k, bottom k + 1, top k + 1, top k (two
+      triangles), counter-clockwise from outside.
+    - Caps: each its own centre point and ring of ``segments`` points, normals (0, 0, 1)
+      on top and (0, 0, −1) at the bottom, triangulated as a fan from the centre.
+
+    Points are duplicated along the two rims (side and cap points at the same place with
+    different normals), so the surface is closed geometrically (its triangles cover it
+    without gaps, all outward) but not topologically (rim edges are not shared by
+    indices). Volume: that of the polygonal prism, segments/2·r²·sin(2π/segments)·h.
+
+    Parameters
+    ----------
+    segments : number of sides, any whole number ≥ 3. (The scene loader currently accepts
+        whole-number shape parameters in 0..8 only; that range is to be widened by the
+        integrator. The default, 32, applies when the parameter is not given.)
+    radius, height : positive sizes.
+
+    >>> cylinder(segments=8).n_triangles
+    32
+    """
+    t = _ring_angles(segments, "cylinder")
+    n, r, h2 = len(t), float(radius), float(height) / 2.0
+    c, s = np.cos(t), np.sin(t)
+    zeros, ones = np.zeros(n), np.ones(n)
+    k = np.arange(n)
+    k1 = (k + 1) % n
+
+    ring_lo = np.column_stack([r * c, r * s, -h2 * ones])
+    ring_hi = np.column_stack([r * c, r * s, h2 * ones])
+    radial = np.column_stack([c, s, zeros])
+    side_pts = np.concatenate([ring_lo, ring_hi])                  # bottom 0..n-1, top n..2n-1
+    side_nrm = np.concatenate([radial, radial])
+    side_tris = _quads_to_triangles(np.column_stack([k, k1, n + k1, n + k]))
+
+    up, down = np.array([[0.0, 0.0, 1.0]]), np.array([[0.0, 0.0, -1.0]])
+    top0 = 2 * n                                                   # top centre, then top ring
+    top_pts = np.concatenate([[[0.0, 0.0, h2]], ring_hi])
+    top_tris = np.column_stack([np.full(n, top0), top0 + 1 + k, top0 + 1 + k1])
+    bot0 = top0 + n + 1                                            # bottom centre, then ring
+    bot_pts = np.concatenate([[[0.0, 0.0, -h2]], ring_lo])
+    bot_tris = np.column_stack([np.full(n, bot0), bot0 + 1 + k1, bot0 + 1 + k])
+
+    points = np.concatenate([side_pts, top_pts, bot_pts])
+    normals = np.concatenate([side_nrm, np.repeat(up, n + 1, axis=0), np.repeat(down, n + 1, axis=0)])
+    return Mesh(points, np.concatenate([side_tris, top_tris, bot_tris]), normals)
+
+
+def cone(segments: int = 32, radius: float = 0.5, height: float = 1.0) -> Mesh:
+    """A closed cone around the z axis: base circle at z = −height/2, apex at z = +height/2.
+
+    Construction
+    ------------
+    The base circle of ``radius`` is the regular ``segments``-gon with corners at
+    θ_k = 2πk/segments, the first at +x.
+
+    - Side: ``segments`` triangles (base k, base k + 1, apex k), counter-clockwise from
+      outside. The cone's exact outward normal at angle θ is
+
+          n(θ) = (h·cos θ, h·sin θ, r) / √(h² + r²),
+
+      the gradient of ρ − r·(h/2 − z)/h (ρ the distance to the axis), which points
+      outward and *up* (toward the apex): it is the radial direction tilted up out of the
+      horizontal by the cone's half-angle α = atan(r/h), i.e. its angle to the +z axis is
+      acos(r/√(h² + r²)) = 90° − α. The base ring points (shared by neighbouring side
+      triangles) carry n(θ_k). The apex has no single normal, so it is one point per side
+      triangle (``segments`` apex points at the same place), apex k carrying n at the
+      middle of its segment, θ = θ_k + π/segments.
+    - Base cap: its own centre point and ring, normal (0, 0, −1), a fan from the centre.
+
+    Points are duplicated at the apex and along the rim, so the surface is closed
+    geometrically (all triangles outward, no gaps) but not topologically. Volume: that of
+    the polygonal pyramid, segments/2·r²·sin(2π/segments)·h/3.
+
+    Parameters
+    ----------
+    segments : number of sides, any whole number ≥ 3 (the scene loader's 0..8 range for
+        whole-number parameters is to be widened by the integrator; the default, 32,
+        applies when the parameter is not given).
+    radius, height : positive sizes.
+
+    >>> cone(segments=8).n_triangles
+    16
+    """
+    t = _ring_angles(segments, "cone")
+    n, r, h = len(t), float(radius), float(height)
+    h2 = h / 2.0
+    k = np.arange(n)
+    k1 = (k + 1) % n
+    ones = np.ones(n)
+
+    def tilted(theta):
+        return np.column_stack([h * np.cos(theta), h * np.sin(theta), r * np.ones_like(theta)]) / np.hypot(h, r)
+
+    ring = np.column_stack([r * np.cos(t), r * np.sin(t), -h2 * ones])
+    apex = np.tile([0.0, 0.0, h2], (n, 1))
+    side_pts = np.concatenate([ring, apex])                        # ring 0..n-1, apexes n..2n-1
+    side_nrm = np.concatenate([tilted(t), tilted(t + np.pi / n)])
+    side_tris = np.column_stack([k, k1, n + k])
+
+    base0 = 2 * n
+    base_pts = np.concatenate([[[0.0, 0.0, -h2]], ring])
+    base_nrm = np.tile([0.0, 0.0, -1.0], (n + 1, 1))
+    base_tris = np.column_stack([np.full(n, base0), base0 + 1 + k1, base0 + 1 + k])
+
+    return Mesh(np.concatenate([side_pts, base_pts]), np.concatenate([side_tris, base_tris]),
+                np.concatenate([side_nrm, base_nrm]))
+
+
+PARAM_RANGES = {
+    # (shape, whole-number parameter): allowed range; the rest allow 0..8
+    ("icosphere", "level"): (0, 7),
+    ("menger", "level"): (0, 4),
+    ("menger", "keep_internal"): (0, 1),
+    ("icosahedron_fractal", "level"): (0, 4),
+    ("cylinder", "segments"): (3, 4096),
+    ("cone", "segments"): (3, 4096),
+}
+"""Ranges of whole-number parameters, checked on loading (memory grows as 20^level, 12^level …)."""
+
+SHAPES = {"cube": cube, "quad": quad, "icosahedron": icosahedron, "icosphere": icosphere, "menger": menger,
+          "icosahedron_fractal": icosahedron_fractal, "cylinder": cylinder, "cone": cone}

@@ -40,6 +40,8 @@ datasets; other VTP compressors (LZ4, LZMA); OBJ materials and groups (ignored).
 
 Any problem raises :class:`MeshFileError`, whose one-line message starts with the path.
 
+Writing: :func:`write_mesh` (``write`` module) writes PLY, OBJ, STL and VTP.
+
 Layout: one module per format (``ply``, ``obj``, ``stl``, ``legacy``, ``vtp``), each with its
 ``read_*`` function; ``_common`` holds the error wrapper, the final checks and the cell
 triangulation they share.
@@ -55,8 +57,10 @@ from lab.meshfiles.obj import read_obj
 from lab.meshfiles.ply import read_ply
 from lab.meshfiles.stl import read_stl
 from lab.meshfiles.vtp import read_vtp
+from lab.meshfiles.write import write_mesh
 
-__all__ = ["MeshFileError", "read_mesh", "read_ply", "read_obj", "read_stl", "read_vtk_legacy", "read_vtp"]
+__all__ = ["MeshFileError", "read_mesh", "read_ply", "read_obj", "read_stl", "read_vtk_legacy", "read_vtp",
+           "write_mesh"]
 
 
 def read_mesh(path) -> Mesh:

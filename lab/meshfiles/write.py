@@ -1,0 +1,121 @@
+"""Write a :class:`lab.mesh.Mesh` as PLY, OBJ, STL or VTP — the exact triangles scanlab draws.
+
+- PLY: binary little-endian, float64 x y z, float64 nx ny nz when the mesh has normals,
+  triangles as ``uchar int`` lists.
+- OBJ: ``v`` (and ``vn``, one per point) rows and ``f i//i`` faces, 17 significant digits.
+- STL: binary, float32 (the format's only precision), facet normals from the geometry;
+  STL holds no point normals.
+- VTP: VTK XML PolyData, inline base64 binary (UInt64 headers), Float64 points and
+  normals, Int64 connectivity and offsets.
+
+Every writer goes through a temporary file in the target folder and a rename, so an
+interrupted export never leaves half a file.
+"""
+from __future__ import annotations
+
+import base64
+import os
+import struct
+import tempfile
+from contextlib import contextmanager
+from pathlib import Path
+
+import numpy as np
+
+from lab.mesh import Mesh
+from lab.meshfiles._common import MeshFileError
+
+
+@contextmanager
+def _atomic(path):
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "wb") as f:
+            yield f
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def write_ply(mesh: Mesh, path) -> None:
+    """Binary little-endian PLY with point normals when the mesh has them."""
+    has_n = mesh.point_normals is not None
+    props = "property double x\nproperty double y\nproperty double z\n"
+    if has_n:
+        props += "property double nx\nproperty double ny\nproperty double nz\n"
+    header = (f"ply\nformat binary_little_endian 1.0\ncomment written by scanlab\nelement vertex {mesh.n_points}\n"
+              f"{props}element face {mesh.n_triangles}\nproperty list uchar int vertex_indices\nend_header\n")
+    verts = mesh.points if not has_n else np.hstack([mesh.points, mesh.point_normals])
+    faces = np.zeros(mesh.n_triangles, dtype=[("n", "u1"), ("v", "<i4", (3,))])
+    faces["n"], faces["v"] = 3, mesh.triangles
+    with _atomic(path) as f:
+        f.write(header.encode("ascii"))
+        f.write(np.ascontiguousarray(verts, dtype="<f8").tobytes())
+        f.write(faces.tobytes())
+
+
+def write_obj(mesh: Mesh, path) -> None:
+    """Wavefront OBJ: ``v``, ``vn`` (if any) and ``f`` rows, 1-based."""
+    lines = ["# written by scanlab"]
+    lines += [f"v {x:.17g} {y:.17g} {z:.17g}" for x, y, z in mesh.points]
+    tri = mesh.triangles + 1
+    if mesh.point_normals is not None:
+        lines += [f"vn {x:.17g} {y:.17g} {z:.17g}" for x, y, z in mesh.point_normals]
+        lines += [f"f {a}//{a} {b}//{b} {c}//{c}" for a, b, c in tri]
+    else:
+        lines += [f"f {a} {b} {c}" for a, b, c in tri]
+    with _atomic(path) as f:
+        f.write(("\n".join(lines) + "\n").encode("ascii"))
+
+
+def write_stl(mesh: Mesh, path) -> None:
+    """Binary STL (float32), one facet per triangle with its geometric normal."""
+    p = mesh.points[mesh.triangles]
+    n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    length = np.linalg.norm(n, axis=1, keepdims=True)
+    n = np.divide(n, length, out=np.zeros_like(n), where=length > 0)
+    rec = np.zeros(mesh.n_triangles, dtype=[("n", "<f4", (3,)), ("v", "<f4", (3, 3)), ("a", "<u2")])
+    rec["n"], rec["v"] = n, p
+    with _atomic(path) as f:
+        f.write(b"scanlab binary STL".ljust(80, b" "))
+        f.write(struct.pack("<I", mesh.n_triangles))
+        f.write(rec.tobytes())
+
+
+def _vtp_array(name: str, values: np.ndarray, vtk_type: str, components: int) -> str:
+    raw = np.ascontiguousarray(values).tobytes()
+    payload = base64.b64encode(struct.pack("<Q", len(raw)) + raw).decode("ascii")
+    comp = f' NumberOfComponents="{components}"' if components > 1 else ""
+    return f'<DataArray type="{vtk_type}" Name="{name}"{comp} format="binary">{payload}</DataArray>'
+
+
+def write_vtp(mesh: Mesh, path) -> None:
+    """VTK XML PolyData with inline base64 binary arrays (and point normals if any)."""
+    point_data = ""
+    if mesh.point_normals is not None:
+        point_data = ('<PointData Normals="Normals">'
+                      + _vtp_array("Normals", mesh.point_normals.astype("<f8"), "Float64", 3) + "</PointData>")
+    conn = mesh.triangles.astype("<i8").ravel()
+    offsets = np.arange(3, 3 * mesh.n_triangles + 1, 3, dtype="<i8")
+    xml = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian" '
+           'header_type="UInt64">\n<PolyData>\n'
+           f'<Piece NumberOfPoints="{mesh.n_points}" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" '
+           f'NumberOfPolys="{mesh.n_triangles}">\n{point_data}\n'
+           f'<Points>{_vtp_array("Points", mesh.points.astype("<f8"), "Float64", 3)}</Points>\n'
+           f'<Polys>{_vtp_array("connectivity", conn, "Int64", 1)}{_vtp_array("offsets", offsets, "Int64", 1)}'
+           '</Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n')
+    with _atomic(path) as f:
+        f.write(xml.encode("ascii"))
+
+
+WRITERS = {".ply": write_ply, ".obj": write_obj, ".stl": write_stl, ".vtp": write_vtp}
+
+
+def write_mesh(mesh: Mesh, path) -> None:
+    """Write ``mesh`` in the format its suffix names (.ply, .obj, .stl, .vtp)."""
+    suffix = Path(path).suffix.lower()
+    if suffix not in WRITERS:
+        raise MeshFileError(f"{path}: cannot write {suffix!r} files (known: {', '.join(WRITERS)})")
+    WRITERS[suffix](mesh, path)
