@@ -21,6 +21,7 @@ from lab.scene import (INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, Camera, Im
 from renderer.transform import model_matrix
 
 MAX_SIZE = 8192
+CSG_SEGMENTS = 128
 SCENES_DIR = Path(__file__).parent / "scenes"
 
 
@@ -161,14 +162,17 @@ def _light_position(s: _Section, table: dict):
 
 OBJECT_KEYS = {"mesh", "shape", "params", "color", "ambient", "diffuse", "specular", "specular_power",
                "specular_color", "opacity", "shading", "scale", "rotate", "translate", "lighting", "name",
-               "model", "ambient_color", "diffuse_color", "shininess", "normals", "crease_angle"}
+               "model", "ambient_color", "diffuse_color", "shininess", "normals", "crease_angle", "csg"}
 
 
 def _object(src, base: Path | None, i, table) -> SceneObject:
     s = _Section(src, f"object[{i}]", table, OBJECT_KEYS)
-    if ("mesh" in table) == ("shape" in table):
-        raise s.error("mesh", "give exactly one of 'mesh' (a file) or 'shape' (a built-in shape)")
-    if "mesh" in table:
+    sources = [k for k in ("mesh", "shape", "csg") if k in table]
+    if len(sources) != 1:
+        raise s.error("mesh", "give exactly one of 'mesh' (a file), 'shape' (a built-in shape) or 'csg' (a tree)")
+    if "csg" in table:
+        mesh, name = _csg(s, table["csg"]), "csg"
+    elif "mesh" in table:
         mesh = _mesh_file(s, base, table["mesh"])
         name = Path(str(table["mesh"])).stem
     else:
@@ -193,6 +197,23 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
         raise s.error("scale", "a zero scale flattens the object")
     return SceneObject(mesh=mesh, material=mat, shading=s.choice("shading", "flat", SHADINGS),
                        model_to_world=m, name=str(table.get("name", name)))
+
+
+def _csg(s: _Section, tree) -> Mesh:
+    """Mesh a CSG tree (``[object.csg]``) once, here, with manifold3d (see :mod:`lab.csg`).
+
+    Quadrics get CSG_SEGMENTS segments per circle: a CSG result is often a small
+    difference of large volumes, so the tessellation must be fine (at 64 the preset's
+    volume is 2 % off the implicit one, at 128 0.6 %).
+    """
+    from lab import csg
+
+    if not isinstance(tree, dict):
+        raise s.error("csg", f"expected a table such as {{ op = \"union\", children = [...] }}, got {tree!r}")
+    try:
+        return csg.to_mesh(csg.from_dict(tree, where="csg"), segments=CSG_SEGMENTS)
+    except ValueError as exc:  # its message starts with the path in the tree, "csg.children[0]…: …"
+        raise SceneError(f"{s.source}: {s.where}.{exc}") from None
 
 
 def _normals(s: _Section, mesh: Mesh, table: dict) -> Mesh:
