@@ -230,3 +230,15 @@ def compare_frames(ours: Frame, ref: Frame) -> tuple[dict, np.ndarray]:
 def measure(ours: Frame, ref: Frame) -> dict:
     """The metrics of :func:`compare_frames` without the ΔE map."""
     return compare_frames(ours, ref)[0]
+
+
+PARITY_BARS = {"coverage_mismatch": 0.0002, "pixels_over_1": 0.002, "mean": 0.1}
+"""The parity bars: coverage mismatch ≤ 0.02 % of all pixels, ΔE2000 > 1 on ≤ 0.2 % of
+the shared pixels, mean ΔE2000 ≤ 0.1."""
+
+
+def failed_bars(metrics: dict) -> list[str]:
+    """The parity bars a :func:`measure` result misses, each as a short sentence; [] = pass."""
+    found = {"coverage_mismatch": metrics["coverage_mismatch"], "pixels_over_1": metrics["pixels_over_1"],
+             "mean": metrics["delta_e_2000"]["mean"]}
+    return [f"{key} {found[key]:.4g} > {bar:g}" for key, bar in PARITY_BARS.items() if found[key] > bar]

@@ -12,13 +12,11 @@ from pathlib import Path
 
 from lab.loading import SCENES_DIR, load_scene
 
-BARS = {"coverage_mismatch": 0.0002, "pixels_over_1": 0.002, "mean": 0.1}
-
-
 def passes(m: dict) -> bool:
-    """The parity bars of issue 2: coverage ≤ 0.02 %, over-1 ≤ 0.2 %, mean ΔE2000 ≤ 0.1."""
-    return (m["coverage_mismatch"] <= BARS["coverage_mismatch"] and m["pixels_over_1"] <= BARS["pixels_over_1"]
-            and m["delta_e_2000"]["mean"] <= BARS["mean"])
+    """Whether a comparison meets the parity bars (:data:`compare.metrics.PARITY_BARS`)."""
+    from compare.metrics import failed_bars
+
+    return not failed_bars(m)
 
 
 def _progress(i: int, n: int, name: str, started: float) -> None:

@@ -229,3 +229,12 @@ def with_normals(mesh: Mesh, mode: str, crease_angle: float | None = None, sourc
         return Mesh(mesh.points, mesh.triangles, radial_normals(mesh.points))
     where = f"{source}: " if source else ""
     raise ValueError(f"{where}unknown normals mode {mode!r}; expected one of {', '.join(NORMAL_MODES)}")
+
+
+def scene_with_normals(scene, crease_angle: float | None = None):
+    """A copy of ``scene`` in which every object without point normals gets computed ones."""
+    from dataclasses import replace
+
+    objs = tuple(o if o.mesh.point_normals is not None else
+                 replace(o, mesh=with_normals(o.mesh, "computed", crease_angle)) for o in scene.objects)
+    return replace(scene, objects=objs)
