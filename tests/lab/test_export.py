@@ -53,3 +53,16 @@ def test_info_reports_area_volume_and_closedness(capsys):
     assert main(["info", "cube"]) == 0
     out = capsys.readouterr().out
     assert "8 points, 12 triangles" in out and "area 6," in out and "volume 1," in out and "oriented: yes" in out
+
+
+def test_menger_level_4_builds_and_exports_in_under_10_s(tmp_path):
+    """menger:level=4 (160,000 cubes): load and write binary PLY in under 10 s, and read back the same count."""
+    import time
+
+    t0 = time.perf_counter()
+    assert main(["export", "menger:level=4", "-o", str(tmp_path / "m4.ply")]) == 0
+    elapsed = time.perf_counter() - t0
+    print(f"menger level 4 build + export: {elapsed:.2f} s")
+    assert elapsed < 10.0
+    back = read_mesh(tmp_path / "m4.ply")
+    assert back.n_triangles == load_scene("menger:level=4").objects[0].mesh.n_triangles
