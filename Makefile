@@ -5,7 +5,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-$(shell cat pyproject.toml | cksum | cut -d' ' -f1)
 OUT    ?= out/demo
 
-.PHONY: demo test venv bench clean
+.PHONY: demo test venv bench clean clean-cache
 
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -24,5 +24,10 @@ test: $(STAMP)
 bench: $(STAMP)
 	$(PY) -m lab bench icosphere:level=5 --size 512x512
 
-clean:
+# numba's on-disk cache is invalidated only when a kernel's *own* file changes: after
+# editing a kernel that others call (say renderer/texture.py), clear it.
+clean-cache:
+	find lab renderer compare lessons -name '*.nbi' -delete -o -name '*.nbc' -delete
+
+clean: clean-cache
 	rm -rf $(VENV) out build *.egg-info

@@ -26,7 +26,20 @@ def _polydata(pv, mesh):
     if mesh.point_normals is not None:
         poly.point_data["Normals"] = mesh.point_normals
         poly.point_data.active_normals_name = "Normals"
+    if mesh.tcoords is not None:
+        poly.active_texture_coordinates = mesh.tcoords
     return poly
+
+
+def _texture(pv, texture):
+    """A vtkTexture with the scene's filter and wrap, no mipmaps. ``pv.Texture`` reads an
+    array with row 0 at the top (it flips it to t = 1), which is what ``image_rows`` gives."""
+    tex = pv.Texture(texture.image_rows)
+    tex.SetInterpolate(texture.filter == "linear")
+    tex.SetMipmap(False)
+    tex.SetRepeat(texture.wrap == "repeat")
+    tex.SetEdgeClamp(texture.wrap == "clamp")
+    return tex
 
 
 def vtk_material(obj, scene) -> dict:
@@ -67,6 +80,8 @@ def _actor(pv, obj, scene):
         for j in range(4):
             user.SetElement(i, j, float(column[i, j]))
     actor.SetUserMatrix(user)
+    if obj.texture is not None:
+        actor.SetTexture(_texture(pv, obj.texture))
     m, prop, v = obj.material, actor.GetProperty(), vtk_material(obj, scene)
     prop.SetAmbientColor(*v["ambient_color"])
     prop.SetDiffuseColor(*v["diffuse_color"])

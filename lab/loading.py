@@ -162,7 +162,8 @@ def _light_position(s: _Section, table: dict):
 
 OBJECT_KEYS = {"mesh", "shape", "params", "color", "ambient", "diffuse", "specular", "specular_power",
                "specular_color", "opacity", "shading", "scale", "rotate", "translate", "lighting", "name",
-               "model", "ambient_color", "diffuse_color", "shininess", "normals", "crease_angle", "csg"}
+               "model", "ambient_color", "diffuse_color", "shininess", "normals", "crease_angle", "csg",
+               "texture", "texture_filter", "texture_wrap"}
 
 
 def _object(src, base: Path | None, i, table) -> SceneObject:
@@ -189,6 +190,7 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
                    ambient_color=s.colour("ambient_color", None), diffuse_color=s.colour("diffuse_color", None),
                    shininess=s.number("shininess", 0.0, 0.0, 128.0))
     mesh = _normals(s, mesh, table)
+    texture = _texture(s, base, mesh, table)
     if mat.opacity != 1.0:
         raise s.error("opacity", f"{mat.opacity:g}: translucency is not drawn yet; only 1.0 is accepted")
     m = model_matrix(scale=s.vector("scale", (1.0, 1.0, 1.0)), rotate=s.vector("rotate", (0.0, 0.0, 0.0)),
@@ -196,7 +198,28 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
     if abs(np.linalg.det(m[:3, :3])) < 1e-300:
         raise s.error("scale", "a zero scale flattens the object")
     return SceneObject(mesh=mesh, material=mat, shading=s.choice("shading", "flat", SHADINGS),
-                       model_to_world=m, name=str(table.get("name", name)))
+                       model_to_world=m, name=str(table.get("name", name)), texture=texture)
+
+
+def _texture(s: _Section, base: Path | None, mesh: Mesh, table: dict):
+    """The object's texture image and sampling rules, or None."""
+    from lab.texture import FILTERS, WRAPS, load_texture
+
+    filt = s.choice("texture_filter", "nearest", FILTERS)
+    wrap = s.choice("texture_wrap", "repeat", WRAPS)
+    if "texture" not in table:
+        return None
+    value = table["texture"]
+    if not isinstance(value, str):
+        raise s.error("texture", f"expected an image file name, got {value!r}")
+    if mesh.tcoords is None:
+        raise s.error("texture", "the mesh has no texture coordinates (a mesh file with them, or a built-in "
+                                 "icosphere, cylinder or cone with params uv = 1)")
+    path = Path(value) if base is None else base / value
+    try:
+        return load_texture(path, filt, wrap)
+    except ValueError as exc:
+        raise s.error("texture", str(exc)) from None
 
 
 def _csg(s: _Section, tree) -> Mesh:

@@ -8,6 +8,8 @@ Conventions
   outside of a closed surface (the course's face orientation rule).
 - ``point_normals`` are unit model-space normals, one per point, or ``None`` when the
   mesh has none (the renderers then use the plane normal of each triangle).
+- ``tcoords`` are texture coordinates (s, t), one pair per point, or ``None``; (0, 0) is
+  the bottom-left of a texture image and (1, 1) its top-right (OpenGL's convention).
 
 Polygons are triangulated once, here in ``lab/``, by a fan from each polygon's first
 vertex (what VTK's OpenGL mapper does for convex polygons), so both renderers receive the
@@ -29,6 +31,7 @@ class Mesh:
     points : (N, 3) float64 array, model space.
     triangles : (M, 3) int64 array of point indices, counter-clockwise from outside.
     point_normals : (N, 3) float64 array of unit normals, or None.
+    tcoords : (N, 2) float64 texture coordinates (s, t), or None.
 
     Examples
     --------
@@ -40,6 +43,7 @@ class Mesh:
     points: np.ndarray
     triangles: np.ndarray
     point_normals: np.ndarray | None = None
+    tcoords: np.ndarray | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "points", np.ascontiguousarray(self.points, dtype=np.float64).reshape(-1, 3))
@@ -47,6 +51,8 @@ class Mesh:
         if self.point_normals is not None:
             n = np.ascontiguousarray(self.point_normals, dtype=np.float64).reshape(-1, 3)
             object.__setattr__(self, "point_normals", n)
+        if self.tcoords is not None:
+            object.__setattr__(self, "tcoords", np.ascontiguousarray(self.tcoords, dtype=np.float64).reshape(-1, 2))
 
     @property
     def n_points(self) -> int:

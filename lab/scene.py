@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from lab.mesh import Mesh
+from lab.texture import Texture
 
 SHADINGS = ("flat", "gouraud", "phong")
 MODELS = ("vtk", "opengl", "classic")
@@ -167,7 +168,8 @@ class SceneObject:
     """One mesh with its material, shading and model transform.
 
     ``model_to_world`` is a 4×4 row-vector matrix (``P_world = [P, 1] @ M``) built from
-    the scene's scale, rotate and translate as ``S·Rx·Ry·Rz·T``.
+    the scene's scale, rotate and translate as ``S·Rx·Ry·Rz·T``. ``texture`` (with the
+    mesh's ``tcoords``) multiplies the lit colour, as VTK does.
     """
 
     mesh: Mesh
@@ -175,6 +177,7 @@ class SceneObject:
     shading: str = "flat"
     model_to_world: np.ndarray = field(default_factory=lambda: np.eye(4))
     name: str = "object"
+    texture: Texture | None = None
 
     def world_mesh(self) -> Mesh:
         """The mesh carried to world space: points by ``model_to_world``, normals by its

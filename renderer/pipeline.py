@@ -21,6 +21,7 @@ from renderer.raster import rasterize_triangles
 from renderer.shading import (FACE_COLOUR, TEXTBOOK_PIXEL, VERTEX_COLOUR, VTK_FLAT, VTK_SMOOTH, Fragments,
                                ObjectTable, shade, to_8bit)
 from renderer.textbook_lighting import CLASSIC, OPENGL, light_faces, light_vertices
+from renderer.texture import CLAMP, LINEAR, NEAREST, REPEAT
 from renderer.transform import normal_matrix, transform_points
 from renderer.window import clip_to_window, window_rows_to_image_rows
 from renderer.workspace import empty, thread_workspace
@@ -46,7 +47,8 @@ class SceneGeometry(NamedTuple):
     verts_view (N, 3) view-space positions; verts_clip (N, 4) clip-space positions;
     normals_view (N, 3) view-space vertex normals, unnormalised (zeros when the object has
     none); triangles (T, 3) indices into those rows; tri_object (T,) each triangle's
-    object; vert_object (N,) each vertex's object.
+    object; vert_object (N,) each vertex's object; tcoords (N, 2) texture coordinates
+    (zeros when the object has none).
     """
 
     verts_view: np.ndarray
@@ -55,11 +57,12 @@ class SceneGeometry(NamedTuple):
     triangles: np.ndarray
     tri_object: np.ndarray
     vert_object: np.ndarray
+    tcoords: np.ndarray
 
 
 def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray) -> SceneGeometry:
     """Stages 1–3 for every object: model → world → view → clip, vertex by vertex."""
-    views, clips, normals, tris, owners, vert_owners = [], [], [], [], [], []
+    views, clips, normals, tris, owners, vert_owners, tcoords = [], [], [], [], [], [], []
     offset = 0
     for i, obj in enumerate(scene.objects):
         model_to_view = obj.model_to_world @ world_to_view_m
@@ -73,10 +76,11 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
         tris.append(obj.mesh.triangles + offset)
         owners.append(np.full(obj.mesh.n_triangles, i, np.int64))
         vert_owners.append(np.full(obj.mesh.n_points, i, np.int64))
+        tcoords.append(obj.mesh.tcoords if obj.mesh.tcoords is not None else np.zeros((obj.mesh.n_points, 2)))
         offset += obj.mesh.n_points
     return SceneGeometry(np.ascontiguousarray(np.concatenate(views)), np.concatenate(clips),
                          np.concatenate(normals), np.concatenate(tris), np.concatenate(owners),
-                         np.concatenate(vert_owners))
+                         np.concatenate(vert_owners), np.concatenate(tcoords))
 
 
 MODEL_CODES = {"vtk": 0, "opengl": OPENGL, "classic": CLASSIC}
@@ -117,10 +121,32 @@ def object_table(scene, complexity: int) -> ObjectTable:
             spe.append(m.specular * np.asarray(m.effective_specular_color))
             power.append(m.specular_power)
     r = scene.render
+    tex = texture_table(scene)
     return ObjectTable(np.array(kind, np.int64), np.array(model, np.int64), np.array(comp, np.int64),
                        np.array(amb, np.float64), np.array(dif, np.float64), np.array(spe, np.float64),
                        np.array(power, np.float64), np.asarray(r.global_ambient, np.float64),
-                       np.asarray(r.ambient, np.float64), bool(r.local_viewer))
+                       np.asarray(r.ambient, np.float64), bool(r.local_viewer), *tex)
+
+
+def texture_table(scene):
+    """All objects' textures in one flat (Σ H·W, 3) array, and per object: textured flag,
+    offset, width, height, filter and wrap codes (see :mod:`renderer.texture`)."""
+    textured, offset, width, height, filt, wrap, chunks = [], [], [], [], [], [], []
+    start = 0
+    for obj in scene.objects:
+        t = obj.texture
+        textured.append(t is not None)
+        h, w = (t.texels.shape[:2]) if t is not None else (1, 1)
+        offset.append(start)
+        width.append(w)
+        height.append(h)
+        filt.append(LINEAR if t is not None and t.filter == "linear" else NEAREST)
+        wrap.append(CLAMP if t is not None and t.wrap == "clamp" else REPEAT)
+        chunks.append(t.texels.reshape(-1, 3) if t is not None else np.ones((1, 3)))
+        start += h * w
+    as_int = lambda v: np.array(v, np.int64)  # noqa: E731
+    return (np.array(textured, np.bool_), as_int(offset), as_int(width), as_int(height), as_int(filt), as_int(wrap),
+            np.ascontiguousarray(np.concatenate(chunks)))
 
 
 def textbook_colours(geo: SceneGeometry, objs: ObjectTable, lights, ws=None):

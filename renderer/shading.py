@@ -31,6 +31,7 @@ from numba import njit, prange
 
 from renderer.lighting import vtk_lighting
 from renderer.textbook_lighting import textbook_lighting
+from renderer.texture import sample
 
 
 @njit(cache=True, inline="always")
@@ -113,6 +114,8 @@ class ObjectTable(NamedTuple):
     complexity : VTK light complexity (0 when the object's lighting is off).
     amb, dif, spe (O, 3), power (O,): see :func:`renderer.pipeline.object_table`.
     global_ambient, ambient_light (3,), local_viewer: from the scene's ``[render]``.
+    textured, tex_offset, tex_width, tex_height, tex_filter, tex_wrap (O,) and texels
+    (Σ H·W, 3): the objects' textures (see :func:`renderer.pipeline.texture_table`).
     """
 
     kind: np.ndarray
@@ -125,6 +128,13 @@ class ObjectTable(NamedTuple):
     global_ambient: np.ndarray
     ambient_light: np.ndarray
     local_viewer: bool
+    textured: np.ndarray
+    tex_offset: np.ndarray
+    tex_width: np.ndarray
+    tex_height: np.ndarray
+    tex_filter: np.ndarray
+    tex_wrap: np.ndarray
+    texels: np.ndarray
 
 
 @njit(cache=True, inline="always")
@@ -160,6 +170,7 @@ def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, p
         n = np.empty(3)
         p = np.empty(3)
         out = np.empty(3)
+        tex = np.empty(3)
         for col in range(width):
             k = frags.tri_index[row, col]
             if k < 0:
@@ -196,5 +207,12 @@ def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, p
                 else:
                     vtk_lighting(n, p, objs.complexity[o], objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
                                  lights, out)
+            if objs.textured[o]:  # the texture multiplies the whole lit colour (VTK, GL_MODULATE)
+                ts = w[0] * geo.tcoords[i0, 0] + w[1] * geo.tcoords[i1, 0] + w[2] * geo.tcoords[i2, 0]
+                tt = w[0] * geo.tcoords[i0, 1] + w[1] * geo.tcoords[i1, 1] + w[2] * geo.tcoords[i2, 1]
+                sample(objs.texels, objs.tex_offset[o], objs.tex_width[o], objs.tex_height[o], objs.tex_filter[o],
+                       objs.tex_wrap[o], ts, tt, tex)
+                for c in range(3):
+                    out[c] *= tex[c]
             for c in range(3):
                 rgb[row, col, c] = unorm8(out[c])
