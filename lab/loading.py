@@ -215,9 +215,8 @@ def _texture(s: _Section, base: Path | None, mesh: Mesh, table: dict):
     if mesh.tcoords is None:
         raise s.error("texture", "the mesh has no texture coordinates (a mesh file with them, or a built-in "
                                  "icosphere, cylinder or cone with params uv = 1)")
-    path = Path(value) if base is None else base / value
     try:
-        return load_texture(path, filt, wrap)
+        return load_texture(resolve_path(base, value), filt, wrap)
     except ValueError as exc:
         raise s.error("texture", str(exc)) from None
 
@@ -257,15 +256,30 @@ def _render(src, table) -> RenderSettings:
                           local_viewer=s.flag("local_viewer", False), ambient=s.colour("ambient", (1.0, 1.0, 1.0)))
 
 
+PYVISTA_EXAMPLES = "pyvista-examples:"
+
+
+def resolve_path(base: Path | None, value: str) -> Path:
+    """A scene file's path: relative to the scene file, or ``pyvista-examples:NAME`` for a
+    file PyVista bundles (its ``examples`` folder, found without importing PyVista)."""
+    if value.startswith(PYVISTA_EXAMPLES):
+        import importlib.util
+
+        spec = importlib.util.find_spec("pyvista")
+        if spec is None or spec.origin is None:
+            raise ValueError(f"{value}: PyVista is not installed, so its example files are not here")
+        return Path(spec.origin).parent / "examples" / value[len(PYVISTA_EXAMPLES):]
+    return Path(value) if base is None else base / value
+
+
 def _mesh_file(s: _Section, base: Path | None, value) -> Mesh:
     from lab.meshfiles import MeshFileError, read_mesh
 
     if not isinstance(value, str):
         raise s.error("mesh", f"expected a file name, got {value!r}")
-    path = Path(value) if base is None else base / value
     try:
-        return read_mesh(path)
-    except MeshFileError as exc:
+        return read_mesh(resolve_path(base, value))
+    except (MeshFileError, ValueError) as exc:
         raise s.error("mesh", str(exc)) from None
 
 

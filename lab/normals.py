@@ -165,7 +165,8 @@ def split_at_creases(mesh: Mesh, crease_angle: float) -> Mesh:
     A new :class:`Mesh`: points ordered by original point, then by first use (so a mesh
     with no creases keeps its points, order and all, and points used by no triangle stay,
     with a zero normal); the triangles reindexed in the same order and with the same
-    winding; ``point_normals`` the unit corner normals (zero where undefined).
+    winding; ``point_normals`` the unit corner normals (zero where undefined);
+    ``tcoords`` those of each point's source point (None if the mesh has none).
     """
     n_points = mesh.n_points
     n_corners = 3 * mesh.n_triangles
@@ -191,7 +192,9 @@ def split_at_creases(mesh: Mesh, crease_angle: float) -> Mesh:
     new_index = np.empty(len(order), dtype=np.int64)
     new_index[order] = np.arange(len(order))
     triangles = new_index[inverse].reshape(-1, 3)
-    return Mesh(mesh.points[out_vertex[order]], triangles, out_normal[order])
+    source = out_vertex[order]                                 # output point -> input point
+    tcoords = None if mesh.tcoords is None else mesh.tcoords[source]
+    return Mesh(mesh.points[source], triangles, out_normal[order], tcoords)
 
 
 def radial_normals(points) -> np.ndarray:
@@ -210,7 +213,8 @@ def with_normals(mesh: Mesh, mode: str, crease_angle: float | None = None, sourc
       the textbook's smooth sphere.
 
     ``crease_angle`` is used by ``"computed"`` only. ``source`` names where the mode
-    came from (a scene file, a command-line option) in the error message.
+    came from (a scene file, a command-line option) in the error message. Every mode
+    keeps the mesh's texture coordinates (split points copy their source point's).
 
     Raises
     ------
@@ -221,12 +225,12 @@ def with_normals(mesh: Mesh, mode: str, crease_angle: float | None = None, sourc
         return mesh
     if mode == "computed":
         if crease_angle is None:
-            return Mesh(mesh.points, mesh.triangles, angle_weighted_normals(mesh))
+            return Mesh(mesh.points, mesh.triangles, angle_weighted_normals(mesh), mesh.tcoords)
         return split_at_creases(mesh, crease_angle)
     if mode == "face":
-        return Mesh(mesh.points, mesh.triangles)
+        return Mesh(mesh.points, mesh.triangles, None, mesh.tcoords)
     if mode == "radial":
-        return Mesh(mesh.points, mesh.triangles, radial_normals(mesh.points))
+        return Mesh(mesh.points, mesh.triangles, radial_normals(mesh.points), mesh.tcoords)
     where = f"{source}: " if source else ""
     raise ValueError(f"{where}unknown normals mode {mode!r}; expected one of {', '.join(NORMAL_MODES)}")
 

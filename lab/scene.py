@@ -181,14 +181,14 @@ class SceneObject:
 
     def world_mesh(self) -> Mesh:
         """The mesh carried to world space: points by ``model_to_world``, normals by its
-        inverse-transpose (renormalised)."""
+        inverse-transpose (renormalised), texture coordinates unchanged."""
         m = self.model_to_world
         points = self.mesh.points @ m[:3, :3] + m[3, :3]
         normals = None
         if self.mesh.point_normals is not None:
             normals = self.mesh.point_normals @ np.linalg.inv(m[:3, :3]).T
             normals /= np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
-        return Mesh(points, self.mesh.triangles, normals)
+        return Mesh(points, self.mesh.triangles, normals, self.mesh.tcoords)
 
     def world_bounds(self) -> np.ndarray:
         """World bounds as VTK's ``vtkProp3D::GetBounds`` gives them.
@@ -224,14 +224,16 @@ class Scene:
         return np.array([b[:, 0].min(), b[:, 1].max(), b[:, 2].min(), b[:, 3].max(), b[:, 4].min(), b[:, 5].max()])
 
     def world_mesh(self) -> Mesh:
-        """All objects in world space as one mesh, in draw order (normals only if all have them)."""
+        """All objects in world space as one mesh, in draw order (normals or tcoords only if all have them)."""
         meshes = [o.world_mesh() for o in self.objects]
         offsets = np.cumsum([0] + [m.n_points for m in meshes[:-1]])
-        normals = None
+        normals = tcoords = None
         if all(m.point_normals is not None for m in meshes):
             normals = np.concatenate([m.point_normals for m in meshes])
+        if all(m.tcoords is not None for m in meshes):
+            tcoords = np.concatenate([m.tcoords for m in meshes])
         return Mesh(np.concatenate([m.points for m in meshes]),
-                    np.concatenate([m.triangles + off for m, off in zip(meshes, offsets)]), normals)
+                    np.concatenate([m.triangles + off for m, off in zip(meshes, offsets)]), normals, tcoords)
 
     def with_overrides(self, shading: str | None = None, size: tuple[int, int] | None = None,
                        model: str | None = None) -> "Scene":

@@ -78,12 +78,44 @@ def icosahedron(radius: float = 1.0) -> Mesh:
     return Mesh(pts, faces)
 
 
-def icosphere(level: int = 2, radius: float = 1.0) -> Mesh:
+def icosphere(level: int = 2, radius: float = 1.0, uv: int = 0) -> Mesh:
     """The textbook's subdivided icosahedron: 20·4^level faces on a sphere of ``radius``.
 
     Each triangle (a, b, c) is split into four, (a, ab, ca), (b, bc, ab), (c, ca, bc),
     (ab, bc, ca), and each new edge midpoint is pushed out onto the circumscribed sphere.
     Midpoints are shared between neighbouring triangles, so the surface stays closed.
+
+    Texture coordinates (``uv=1``)
+    ------------------------------
+    Longitude and latitude with +y as the north pole, for an equirectangular image
+    (longitude −180°…180° left to right, north at the top):
+
+        s = 0.5 + atan2(x, z) / (2π),   t = 0.5 + asin(y / |p|) / π.
+
+    Longitude 0 (the image's middle column) faces +z and longitude grows toward +x, so
+    the image is seen unmirrored from outside with +y up; the seam (s = 0 ≡ 1) is the
+    half circle x = 0, z < 0. Each point gets s in [0, 1) first; then
+
+    - seam: in a triangle whose vertices' s spread over more than 0.5 (it straddles the
+      seam), the vertices with s < 0.5 take s + 1, so s lies in [0, 1.5) and no triangle
+      interpolates across the whole image (sample with a repeating texture);
+    - poles (0, ±radius, 0), where the longitude is undefined (at level ≥ 1 they are
+      vertices): in each triangle the pole takes the mean s of the triangle's two other
+      vertices (after the seam fix), t = 1 (north) or 0 (south).
+
+    A point whose triangles need different (s, t) is duplicated, once per distinct pair:
+    the point keeps its index for the pair of its first use, the copies follow all the
+    original points in order of first use. Positions and triangles (count, order,
+    winding, surface) are the same as with ``uv=0``; only points are split, so the
+    surface is closed geometrically but no longer topologically along the seam and at
+    the poles. Level 0 has no pole vertex: each pole lies on an edge, and the two
+    triangles of that edge span half the image (s spread 0.5).
+
+    Parameters
+    ----------
+    level : subdivision depth (0 is the icosahedron).
+    radius : radius of the sphere.
+    uv : 0 (default) no texture coordinates, 1 the longitude/latitude ones above.
 
     >>> icosphere(level=1).n_triangles
     80
@@ -104,7 +136,56 @@ def icosphere(level: int = 2, radius: float = 1.0) -> Mesh:
             np.stack([c, ca, bc], axis=1), np.stack([ab, bc, ca], axis=1),
         ])
         pts = np.concatenate([pts, mid])
-    return Mesh(pts, tris)
+    if not uv:
+        return Mesh(pts, tris)
+    return _split_corners(pts, tris, _sphere_corner_tcoords(pts, tris))
+
+
+def _sphere_corner_tcoords(points: np.ndarray, triangles: np.ndarray) -> np.ndarray:
+    """(T, 3, 2) longitude/latitude (s, t) of every triangle corner, seam and poles fixed
+    (see :func:`icosphere`)."""
+    x, y, z = points.T
+    r = np.linalg.norm(points, axis=1)
+    s = (0.5 + np.arctan2(x, z) / (2.0 * np.pi)) % 1.0              # [0, 1)
+    t = 0.5 + np.arcsin(np.clip(y / np.where(r > 0, r, 1.0), -1.0, 1.0)) / np.pi
+    pole = np.hypot(x, z) <= 1e-12 * np.maximum(r, 1e-300)
+    cs, cpole = s[triangles], pole[triangles]                        # (T, 3)
+    lo = np.where(cpole, np.inf, cs).min(axis=1, keepdims=True)
+    hi = np.where(cpole, -np.inf, cs).max(axis=1, keepdims=True)
+    cs = np.where((hi - lo > 0.5) & (cs < 0.5) & ~cpole, cs + 1.0, cs)  # unwrap across the seam
+    others = np.where(cpole, 0.0, cs).sum(axis=1, keepdims=True) / np.maximum((~cpole).sum(axis=1, keepdims=True), 1)
+    cs = np.where(cpole, others, cs)                                 # pole: mean of the others
+    return np.stack([cs, t[triangles]], axis=2)
+
+
+def _split_corners(points, triangles, corner_tcoords) -> Mesh:
+    """A mesh with one (s, t) per point from per-corner (s, t): a point whose corners have
+    different (s, t) is duplicated, once per distinct pair.
+
+    The point keeps its index for the pair of its first use (corner order: triangle by
+    triangle); copies are appended after the original points, in order of first use.
+    Triangles keep their order and winding.
+    Points used by no triangle keep (s, t) = (0, 0).
+    """
+    n = len(points)
+    vertex = triangles.ravel()
+    st = corner_tcoords.reshape(-1, 2) + 0.0                         # -0.0 -> 0.0
+    key = np.column_stack([vertex.astype(np.float64), st])
+    uniq, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    inverse = inverse.ravel()
+    group_vertex = vertex[first]
+    by_use = np.argsort(first)                                      # groups in order of first use
+    _, primary_at = np.unique(group_vertex[by_use], return_index=True)
+    primary = np.zeros(len(first), dtype=bool)
+    primary[by_use[primary_at]] = True                              # each vertex's first pair
+    extra = by_use[~primary[by_use]]
+    new_id = np.empty(len(first), dtype=np.int64)
+    new_id[primary] = group_vertex[primary]
+    new_id[extra] = n + np.arange(len(extra))
+    tcoords = np.zeros((n + len(extra), 2))
+    tcoords[new_id] = uniq[:, 1:]
+    source = np.concatenate([np.arange(n), group_vertex[extra]])
+    return Mesh(np.asarray(points)[source], new_id[inverse].reshape(-1, 3), None, tcoords)
 
 
 # The unit cube's corners as (x, y, z) offsets in {0, 1}, point index = x + 2y + 4z (as in
@@ -248,7 +329,12 @@ def _ring_angles(segments: int, name: str) -> np.ndarray:
     return 2.0 * np.pi * np.arange(n) / n
 
 
-def cylinder(segments: int = 32, radius: float = 0.5, height: float = 1.0) -> Mesh:
+def _cap_tcoords(points: np.ndarray, r: float) -> np.ndarray:
+    """Planar (s, t) of cap points: s = 0.5 + x/(2r), t = 0.5 + y/(2r) (the image seen from +z)."""
+    return np.column_stack([0.5 + points[:, 0] / (2.0 * r), 0.5 + points[:, 1] / (2.0 * r)])
+
+
+def cylinder(segments: int = 32, radius: float = 0.5, height: float = 1.0, uv: int = 0) -> Mesh:
     """A closed cylinder around the z axis, from z = −height/2 to z = +height/2.
 
     Construction
@@ -268,44 +354,58 @@ def cylinder(segments: int = 32, radius: float = 0.5, height: float = 1.0) -> Me
     without gaps, all outward) but not topologically (rim edges are not shared by
     indices). Volume: that of the polygonal prism, segments/2·r²·sin(2π/segments)·h.
 
+    Texture coordinates (``uv=1``): on the side s = θ/(2π), t = (z + height/2)/height, the
+    image wrapped once around, unmirrored seen from outside with +z up; each ring gets a
+    seam point at θ = 2π (s = 1, at the place of θ = 0), so the side has 2·(segments + 1)
+    points and no triangle spans the whole image. Caps: planar, s = 0.5 + x/(2r),
+    t = 0.5 + y/(2r) (the image as seen from +z: mirrored on the bottom cap seen from
+    below). All in [0, 1]. Triangles (count, order, winding) are those of ``uv=0``.
+
     Parameters
     ----------
     segments : number of sides, any whole number ≥ 3. (The scene loader currently accepts
         whole-number shape parameters in 0..8 only; that range is to be widened by the
         integrator. The default, 32, applies when the parameter is not given.)
     radius, height : positive sizes.
+    uv : 0 (default) no texture coordinates, 1 the ones above.
 
     >>> cylinder(segments=8).n_triangles
     32
     """
     t = _ring_angles(segments, "cylinder")
     n, r, h2 = len(t), float(radius), float(height) / 2.0
-    c, s = np.cos(t), np.sin(t)
-    zeros, ones = np.zeros(n), np.ones(n)
+    cols = n + 1 if uv else n                                      # side columns (uv: seam copy)
+    kk = np.arange(cols) % n                                       # column -> corner angle index
+    c, s = np.cos(t)[kk], np.sin(t)[kk]
+    zeros, ones = np.zeros(cols), np.ones(cols)
     k = np.arange(n)
-    k1 = (k + 1) % n
+    k1 = k + 1 if uv else (k + 1) % n
 
     ring_lo = np.column_stack([r * c, r * s, -h2 * ones])
     ring_hi = np.column_stack([r * c, r * s, h2 * ones])
     radial = np.column_stack([c, s, zeros])
-    side_pts = np.concatenate([ring_lo, ring_hi])                  # bottom 0..n-1, top n..2n-1
+    side_pts = np.concatenate([ring_lo, ring_hi])                  # bottom 0..cols-1, then top
     side_nrm = np.concatenate([radial, radial])
-    side_tris = _quads_to_triangles(np.column_stack([k, k1, n + k1, n + k]))
+    side_tris = _quads_to_triangles(np.column_stack([k, k1, cols + k1, cols + k]))
 
     up, down = np.array([[0.0, 0.0, 1.0]]), np.array([[0.0, 0.0, -1.0]])
-    top0 = 2 * n                                                   # top centre, then top ring
-    top_pts = np.concatenate([[[0.0, 0.0, h2]], ring_hi])
-    top_tris = np.column_stack([np.full(n, top0), top0 + 1 + k, top0 + 1 + k1])
+    top0 = 2 * cols                                                # top centre, then top ring
+    top_pts = np.concatenate([[[0.0, 0.0, h2]], ring_hi[:n]])
+    top_tris = np.column_stack([np.full(n, top0), top0 + 1 + k, top0 + 1 + (k + 1) % n])
     bot0 = top0 + n + 1                                            # bottom centre, then ring
-    bot_pts = np.concatenate([[[0.0, 0.0, -h2]], ring_lo])
-    bot_tris = np.column_stack([np.full(n, bot0), bot0 + 1 + k1, bot0 + 1 + k])
+    bot_pts = np.concatenate([[[0.0, 0.0, -h2]], ring_lo[:n]])
+    bot_tris = np.column_stack([np.full(n, bot0), bot0 + 1 + (k + 1) % n, bot0 + 1 + k])
 
     points = np.concatenate([side_pts, top_pts, bot_pts])
     normals = np.concatenate([side_nrm, np.repeat(up, n + 1, axis=0), np.repeat(down, n + 1, axis=0)])
-    return Mesh(points, np.concatenate([side_tris, top_tris, bot_tris]), normals)
+    tcoords = None
+    if uv:
+        side_st = np.column_stack([np.arange(cols) / n, zeros])
+        tcoords = np.concatenate([side_st, side_st + [0.0, 1.0], _cap_tcoords(top_pts, r), _cap_tcoords(bot_pts, r)])
+    return Mesh(points, np.concatenate([side_tris, top_tris, bot_tris]), normals, tcoords)
 
 
-def cone(segments: int = 32, radius: float = 0.5, height: float = 1.0) -> Mesh:
+def cone(segments: int = 32, radius: float = 0.5, height: float = 1.0, uv: int = 0) -> Mesh:
     """A closed cone around the z axis: base circle at z = −height/2, apex at z = +height/2.
 
     Construction
@@ -331,12 +431,20 @@ def cone(segments: int = 32, radius: float = 0.5, height: float = 1.0) -> Mesh:
     geometrically (all triangles outward, no gaps) but not topologically. Volume: that of
     the polygonal pyramid, segments/2·r²·sin(2π/segments)·h/3.
 
+    Texture coordinates (``uv=1``): on the side s = θ/(2π), t = (z + height/2)/height, so
+    base ring points have t = 0 and apex k, at the middle of its segment, has
+    s = (k + ½)/segments and t = 1; the base ring gets a seam point at θ = 2π (s = 1, at the
+    place of θ = 0), so the side has 2·segments + 1 points. Base cap: planar,
+    s = 0.5 + x/(2r), t = 0.5 + y/(2r) (the image as seen from +z, so mirrored seen from
+    below). All in [0, 1]. Triangles (count, order, winding) are those of ``uv=0``.
+
     Parameters
     ----------
     segments : number of sides, any whole number ≥ 3 (the scene loader's 0..8 range for
         whole-number parameters is to be widened by the integrator; the default, 32,
         applies when the parameter is not given).
     radius, height : positive sizes.
+    uv : 0 (default) no texture coordinates, 1 the ones above.
 
     >>> cone(segments=8).n_triangles
     16
@@ -344,26 +452,31 @@ def cone(segments: int = 32, radius: float = 0.5, height: float = 1.0) -> Mesh:
     t = _ring_angles(segments, "cone")
     n, r, h = len(t), float(radius), float(height)
     h2 = h / 2.0
+    cols = n + 1 if uv else n                                      # side ring points (uv: seam copy)
+    kk = np.arange(cols) % n                                       # ring point -> corner angle index
     k = np.arange(n)
-    k1 = (k + 1) % n
-    ones = np.ones(n)
+    k1 = k + 1 if uv else (k + 1) % n
 
     def tilted(theta):
         return np.column_stack([h * np.cos(theta), h * np.sin(theta), r * np.ones_like(theta)]) / np.hypot(h, r)
 
-    ring = np.column_stack([r * np.cos(t), r * np.sin(t), -h2 * ones])
+    ring = np.column_stack([r * np.cos(t), r * np.sin(t), -h2 * np.ones(n)])
     apex = np.tile([0.0, 0.0, h2], (n, 1))
-    side_pts = np.concatenate([ring, apex])                        # ring 0..n-1, apexes n..2n-1
-    side_nrm = np.concatenate([tilted(t), tilted(t + np.pi / n)])
-    side_tris = np.column_stack([k, k1, n + k])
+    side_pts = np.concatenate([ring[kk], apex])                    # ring 0..cols-1, then apexes
+    side_nrm = np.concatenate([tilted(t)[kk], tilted(t + np.pi / n)])
+    side_tris = np.column_stack([k, k1, cols + k])
 
-    base0 = 2 * n
+    base0 = cols + n
     base_pts = np.concatenate([[[0.0, 0.0, -h2]], ring])
     base_nrm = np.tile([0.0, 0.0, -1.0], (n + 1, 1))
-    base_tris = np.column_stack([np.full(n, base0), base0 + 1 + k1, base0 + 1 + k])
+    base_tris = np.column_stack([np.full(n, base0), base0 + 1 + (k + 1) % n, base0 + 1 + k])
 
+    tcoords = None
+    if uv:
+        tcoords = np.concatenate([np.column_stack([np.arange(cols) / n, np.zeros(cols)]),
+                                  np.column_stack([(k + 0.5) / n, np.ones(n)]), _cap_tcoords(base_pts, r)])
     return Mesh(np.concatenate([side_pts, base_pts]), np.concatenate([side_tris, base_tris]),
-                np.concatenate([side_nrm, base_nrm]))
+                np.concatenate([side_nrm, base_nrm]), tcoords)
 
 
 PARAM_RANGES = {
@@ -374,6 +487,9 @@ PARAM_RANGES = {
     ("icosahedron_fractal", "level"): (0, 4),
     ("cylinder", "segments"): (3, 4096),
     ("cone", "segments"): (3, 4096),
+    ("icosphere", "uv"): (0, 1),
+    ("cylinder", "uv"): (0, 1),
+    ("cone", "uv"): (0, 1),
 }
 """Ranges of whole-number parameters, checked on loading (memory grows as 20^level, 12^level …)."""
 

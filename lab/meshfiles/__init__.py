@@ -8,34 +8,45 @@ with no VTK installed.  Every reader returns a :class:`lab.mesh.Mesh`:
 - triangle strips are split with alternating winding, as VTK's ``vtkTriangleStrip``:
   strip ``v0 v1 v2 v3 v4`` gives ``(0, 1, 2), (2, 1, 3), (2, 3, 4)``;
 - polygon triangles come before strip triangles (VTK's cell order);
-- point normals are scaled to unit length (zero normals stay zero).
+- point normals are scaled to unit length (zero normals stay zero);
+- texture coordinates (s, t) are read as VTK reads them (its active TCoords), at the
+  precision of the file; ``Mesh.tcoords`` is None when the file has none.
 
 Supported
 ---------
 PLY (:func:`read_ply`)
     ``ascii``, ``binary_little_endian`` and ``binary_big_endian``.  ``element vertex``
-    with x, y, z of any numeric type and optional nx, ny, nz; ``element face`` with the
-    list ``vertex_indices`` (or ``vertex_index``).  Other elements and properties, list
-    or scalar, are skipped.
+    with x, y, z of any numeric type, optional nx, ny, nz and optional texture
+    coordinates u, v (else texture_u, texture_v, else s, t: VTK's order of preference);
+    ``element face`` with the list ``vertex_indices`` (or ``vertex_index``).  Other
+    elements and properties, list or scalar, are skipped.
 OBJ (:func:`read_obj`)
-    ``v``, ``vn`` and ``f`` (``i``, ``i/t``, ``i//n``, ``i/t/n``, negative indices).  Points
-    are the ``v`` rows as given.  Point normals only if every face corner has a normal and
-    each point is always paired with the same one (points of no face get zero normals).
-    Other statements (``vt``, ``o``, ``g``, ``s``, ``usemtl``, ``mtllib``, ``l``) are ignored.
+    ``v``, ``vt``, ``vn`` and ``f`` (``i``, ``i/t``, ``i//n``, ``i/t/n``, negative indices).
+    Points are the ``v`` rows as given.  Point normals only if every face corner has a
+    normal and each point is always paired with the same one (points of no face get zero
+    normals); texture coordinates (``vt`` u, v) by the same rule.  VTK's OBJ reader
+    duplicates points used with different ``vt``/``vn`` instead; we never split points, so
+    such files give no texture coordinates (or normals).  Other statements (``o``, ``g``,
+    ``s``, ``usemtl``, ``mtllib``, ``l``) are ignored.
 STL (:func:`read_stl`)
     ascii and binary.  Exactly equal vertices are merged (first-occurrence order), so a
-    closed STL gives a closed mesh.  No point normals (facet normals are not those).
+    closed STL gives a closed mesh.  No point normals (facet normals are not those), no
+    texture coordinates.
 Legacy VTK (:func:`read_vtk_legacy`)
     ``DATASET POLYDATA``, ASCII or BINARY (big-endian); POINTS; POLYGONS and
     TRIANGLE_STRIPS in the classic layout (counts inline) and the 5.1 layout (OFFSETS and
-    CONNECTIVITY); POINT_DATA NORMALS.  Other sections and attributes are skipped.
+    CONNECTIVITY); POINT_DATA NORMALS; the first POINT_DATA TEXTURE_COORDINATES (VTK's
+    active one) if it has 2 components.  Other sections and attributes are skipped.
 VTP (:func:`read_vtp`)
     VTK XML PolyData: ascii, binary (base64 with UInt32 or UInt64 headers, optionally
     ``vtkZLibDataCompressor``) and appended data (raw or base64), either byte order, one
-    or more pieces; Points, Polys, Strips, and point normals (``PointData Normals="..."``
-    or a 3-component array named ``Normals``).
+    or more pieces; Points, Polys, Strips, point normals (``PointData Normals="..."``
+    or a 3-component array named ``Normals``) and texture coordinates (the 2-component
+    array named by ``PointData TCoords="..."``).
 
-Not supported: colours, texture coordinates, vertices and lines (ignored); other VTK
+Not supported: colours, vertices and lines (ignored); texture coordinates of 1 or 3
+components, and per-face-corner ones (PLY ``texcoord`` lists, OBJ points with several
+``vt``), for which VTK splits points (ignored: no texture coordinates); other VTK
 datasets; other VTP compressors (LZ4, LZMA); OBJ materials and groups (ignored).
 
 Any problem raises :class:`MeshFileError`, whose one-line message starts with the path.

@@ -34,8 +34,9 @@ def reading(path):
         raise MeshFileError(f"{path}: {message}") from None
 
 
-def make_mesh(points, triangles, normals=None) -> Mesh:
-    """Check points, triangles and normals, make normals unit length, build the Mesh."""
+def make_mesh(points, triangles, normals=None, tcoords=None) -> Mesh:
+    """Check points, triangles, normals and texture coordinates, make normals unit length,
+    build the Mesh."""
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     triangles = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
     if not np.isfinite(points).all():
@@ -53,7 +54,13 @@ def make_mesh(points, triangles, normals=None) -> Mesh:
             raise ValueError("normals contain NaN or infinity")
         length = np.linalg.norm(normals, axis=1, keepdims=True)
         normals = np.divide(normals, length, out=np.zeros_like(normals), where=length > 0)
-    return Mesh(points, triangles, normals)
+    if tcoords is not None:
+        tcoords = np.asarray(tcoords, dtype=np.float64).reshape(-1, 2)
+        if len(tcoords) != len(points):
+            raise ValueError(f"{len(tcoords)} texture coordinates for {len(points)} points")
+        if not np.isfinite(tcoords).all():
+            raise ValueError("texture coordinates contain NaN or infinity")
+    return Mesh(points, triangles, normals, tcoords)
 
 
 def split_counted(flat, n_cells):

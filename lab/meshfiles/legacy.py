@@ -71,7 +71,9 @@ def read_vtk_legacy(path) -> Mesh:
     Returns
     -------
     Mesh
-        Triangles of POLYGONS, then of TRIANGLE_STRIPS; normals from POINT_DATA NORMALS.
+        Triangles of POLYGONS, then of TRIANGLE_STRIPS; normals from POINT_DATA NORMALS;
+        texture coordinates from the first POINT_DATA TEXTURE_COORDINATES (the one VTK
+        makes active) when it has 2 components (1- or 3-component ones give none).
 
     Raises
     ------
@@ -88,7 +90,8 @@ def read_vtk_legacy(path) -> Mesh:
         words = f.line()
         if [w.upper() for w in words[:2]] != ["DATASET", "POLYDATA"]:
             raise ValueError(f"only DATASET POLYDATA is supported, not {' '.join(words)[:40]!r}")
-        points = normals = None
+        points = normals = tcoords = None
+        seen_tcoords = False  # only the first point TEXTURE_COORDINATES is the active one
         polys, strips = (np.zeros(1), np.zeros(0)), (np.zeros(1), np.zeros(0))
         n_values, point_data = 0, False  # tuples per attribute in the current *_DATA section
         byte = "unsigned_char" if f.binary else "float"
@@ -114,7 +117,10 @@ def read_vtk_legacy(path) -> Mesh:
             elif key in ("GLOBAL_IDS", "PEDIGREE_IDS"):
                 f.values(n_values, words[2])
             elif key == "TEXTURE_COORDINATES":
-                f.values(n_values * int(words[2]), words[3])
+                values = f.values(n_values * int(words[2]), words[3])
+                if point_data and not seen_tcoords:
+                    seen_tcoords = True
+                    tcoords = values if int(words[2]) == 2 else None
             elif key == "COLOR_SCALARS":
                 f.values(n_values * int(words[2]), byte)
             elif key == "LOOKUP_TABLE":
@@ -132,4 +138,4 @@ def read_vtk_legacy(path) -> Mesh:
         if points is None:
             raise ValueError("no POINTS")
         triangles = np.concatenate([polygon_triangles(*polys), strip_triangles(*strips)])
-        return make_mesh(points, triangles, normals)
+        return make_mesh(points, triangles, normals, tcoords)

@@ -1,4 +1,4 @@
-"""PLY reader: ascii and binary (either byte order); vertex x y z [nx ny nz], face lists."""
+"""PLY reader: ascii and binary (either byte order); vertex x y z [nx ny nz] [u v], face lists."""
 from __future__ import annotations
 
 import numpy as np
@@ -10,6 +10,11 @@ from lab.meshfiles._common import make_mesh, polygon_triangles, reading, split_c
 _PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
               "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
               "float": "f4", "float32": "f4", "double": "f8", "float64": "f8"}
+
+
+# Vertex properties holding texture coordinates, in the order of preference of VTK's PLY
+# reader (checked with VTK 9.7: a file with two pairs gives the first pair found here).
+_PLY_TCOORDS = (("u", "v"), ("texture_u", "texture_v"), ("s", "t"))
 
 
 def _ply_type(name):
@@ -94,8 +99,11 @@ def read_ply(path) -> Mesh:
     Returns
     -------
     Mesh
-        Points from ``vertex`` x, y, z; normals from nx, ny, nz if all present; triangles
-        fanned from the ``face`` lists.
+        Points from ``vertex`` x, y, z; normals from nx, ny, nz if all present; texture
+        coordinates from u, v, else texture_u, texture_v, else s, t (VTK's choice), at
+        the precision of the file (VTK rounds them to float32); triangles fanned from the
+        ``face`` lists. Per-corner ``texcoord`` lists of faces are ignored (VTK splits
+        points for them).
 
     Raises
     ------
@@ -136,9 +144,11 @@ def read_ply(path) -> Mesh:
         normals = None
         if {"nx", "ny", "nz"} <= vertex.keys():
             normals = np.column_stack([vertex["nx"], vertex["ny"], vertex["nz"]])
+        pair = next((p for p in _PLY_TCOORDS if set(p) <= vertex.keys()), None)
+        tcoords = None if pair is None else np.column_stack([vertex[pair[0]], vertex[pair[1]]])
         n_faces, face = found.get("face", (0, {}))
         lists = [name for e, _, props in elements if e == "face" for name, ctype, _ in props if ctype is not None]
         key = next((k for k in ("vertex_indices", "vertex_index") if k in lists), None)
         if key is None:
             raise ValueError("no 'face' element with a vertex_indices list")
-        return make_mesh(points, polygon_triangles(*split_counted(face[key], n_faces)), normals)
+        return make_mesh(points, polygon_triangles(*split_counted(face[key], n_faces)), normals, tcoords)

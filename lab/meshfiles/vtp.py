@@ -58,6 +58,15 @@ def _vtp_normals_array(piece):
     return (named or fallback or [None])[0]
 
 
+def _vtp_tcoords_array(piece):
+    """The 2-component PointData DataArray named by ``TCoords="..."`` (VTK's active one), or None."""
+    point_data = piece.find("PointData")
+    if point_data is None or point_data.get("TCoords") is None:
+        return None
+    named = [a for a in point_data.findall("DataArray") if a.get("Name") == point_data.get("TCoords")]
+    return named[0] if named and named[0].get("NumberOfComponents", "1") == "2" else None
+
+
 def read_vtp(path) -> Mesh:
     """Read a VTK XML PolyData (``.vtp``) file.
 
@@ -69,7 +78,8 @@ def read_vtp(path) -> Mesh:
     -------
     Mesh
         Points of all pieces; triangles of Polys, then of Strips; point normals if every
-        piece has them.
+        piece has them; texture coordinates (the 2-component PointData array named by the
+        ``TCoords`` attribute) if every piece has them.
 
     Raises
     ------
@@ -118,7 +128,7 @@ def read_vtp(path) -> Mesh:
                 offsets = np.concatenate([[0], offsets])
             return offsets, connectivity
 
-        points, polys, strips, normals = [], [], [], []
+        points, polys, strips, normals, tcoords = [], [], [], [], []
         for piece in root.iter("Piece"):
             base = sum(len(p) for p in points)
             points.append(array(piece.find("Points/DataArray"), "Points").reshape(-1, 3))
@@ -126,7 +136,10 @@ def read_vtp(path) -> Mesh:
             strips.append(strip_triangles(*cells(piece, "Strips")) + base)
             found = _vtp_normals_array(piece)
             normals.append(None if found is None else array(found, "Normals"))
+            found = _vtp_tcoords_array(piece)
+            tcoords.append(None if found is None else array(found, "TCoords"))
         if not points:
             raise ValueError("no Piece")
         normals = None if any(n is None for n in normals) else np.concatenate(normals)
-        return make_mesh(np.concatenate(points), np.concatenate(polys + strips), normals)
+        tcoords = None if any(t is None for t in tcoords) else np.concatenate(tcoords)
+        return make_mesh(np.concatenate(points), np.concatenate(polys + strips), normals, tcoords)

@@ -1,12 +1,14 @@
 """Write a :class:`lab.mesh.Mesh` as PLY, OBJ, STL or VTP — the exact triangles scanlab draws.
 
 - PLY: binary little-endian, float64 x y z, float64 nx ny nz when the mesh has normals,
-  triangles as ``uchar int`` lists.
-- OBJ: ``v`` (and ``vn``, one per point) rows and ``f i//i`` faces, 17 significant digits.
+  float64 s t when it has texture coordinates, triangles as ``uchar int`` lists.
+- OBJ: ``v`` (and ``vt`` and ``vn``, one per point) rows and ``f i i i``, ``f i/i ...``,
+  ``f i//i ...`` or ``f i/i/i ...`` faces, 17 significant digits.
 - STL: binary, float32 (the format's only precision), facet normals from the geometry;
-  STL holds no point normals.
-- VTP: VTK XML PolyData, inline base64 binary (UInt64 headers), Float64 points and
-  normals, Int64 connectivity and offsets.
+  STL holds no point normals and no texture coordinates.
+- VTP: VTK XML PolyData, inline base64 binary (UInt64 headers), Float64 points, normals
+  (``Normals="Normals"``) and texture coordinates (``TCoords="TCoords"``, 2 components),
+  Int64 connectivity and offsets.
 
 Every writer goes through a temporary file in the target folder and a rename, so an
 interrupted export never leaves half a file.
@@ -40,14 +42,18 @@ def _atomic(path):
 
 
 def write_ply(mesh: Mesh, path) -> None:
-    """Binary little-endian PLY with point normals when the mesh has them."""
-    has_n = mesh.point_normals is not None
-    props = "property double x\nproperty double y\nproperty double z\n"
-    if has_n:
-        props += "property double nx\nproperty double ny\nproperty double nz\n"
+    """Binary little-endian PLY with point normals and texture coordinates when the mesh has them."""
+    columns, names = [mesh.points], ["x", "y", "z"]
+    if mesh.point_normals is not None:
+        columns.append(mesh.point_normals)
+        names += ["nx", "ny", "nz"]
+    if mesh.tcoords is not None:
+        columns.append(mesh.tcoords)
+        names += ["s", "t"]
+    props = "".join(f"property double {name}\n" for name in names)
     header = (f"ply\nformat binary_little_endian 1.0\ncomment written by scanlab\nelement vertex {mesh.n_points}\n"
               f"{props}element face {mesh.n_triangles}\nproperty list uchar int vertex_indices\nend_header\n")
-    verts = mesh.points if not has_n else np.hstack([mesh.points, mesh.point_normals])
+    verts = np.hstack(columns)
     faces = np.zeros(mesh.n_triangles, dtype=[("n", "u1"), ("v", "<i4", (3,))])
     faces["n"], faces["v"] = 3, mesh.triangles
     with _atomic(path) as f:
@@ -57,15 +63,18 @@ def write_ply(mesh: Mesh, path) -> None:
 
 
 def write_obj(mesh: Mesh, path) -> None:
-    """Wavefront OBJ: ``v``, ``vn`` (if any) and ``f`` rows, 1-based."""
+    """Wavefront OBJ: ``v``, ``vt`` (if any), ``vn`` (if any) and ``f`` rows, 1-based; point
+    i has ``vt`` i and ``vn`` i."""
     lines = ["# written by scanlab"]
     lines += [f"v {x:.17g} {y:.17g} {z:.17g}" for x, y, z in mesh.points]
-    tri = mesh.triangles + 1
+    if mesh.tcoords is not None:
+        lines += [f"vt {s:.17g} {t:.17g}" for s, t in mesh.tcoords]
     if mesh.point_normals is not None:
         lines += [f"vn {x:.17g} {y:.17g} {z:.17g}" for x, y, z in mesh.point_normals]
-        lines += [f"f {a}//{a} {b}//{b} {c}//{c}" for a, b, c in tri]
-    else:
-        lines += [f"f {a} {b} {c}" for a, b, c in tri]
+    corner = {(False, False): "{0}", (True, False): "{0}/{0}", (False, True): "{0}//{0}",
+              (True, True): "{0}/{0}/{0}"}[mesh.tcoords is not None, mesh.point_normals is not None]
+    face = f"f {corner} {corner.replace('0', '1')} {corner.replace('0', '2')}"
+    lines += [face.format(a, b, c) for a, b, c in mesh.triangles + 1]
     with _atomic(path) as f:
         f.write(("\n".join(lines) + "\n").encode("ascii"))
 
@@ -92,11 +101,16 @@ def _vtp_array(name: str, values: np.ndarray, vtk_type: str, components: int) ->
 
 
 def write_vtp(mesh: Mesh, path) -> None:
-    """VTK XML PolyData with inline base64 binary arrays (and point normals if any)."""
-    point_data = ""
+    """VTK XML PolyData with inline base64 binary arrays (and point normals and texture
+    coordinates if any)."""
+    attributes, arrays = "", ""
     if mesh.point_normals is not None:
-        point_data = ('<PointData Normals="Normals">'
-                      + _vtp_array("Normals", mesh.point_normals.astype("<f8"), "Float64", 3) + "</PointData>")
+        attributes += ' Normals="Normals"'
+        arrays += _vtp_array("Normals", mesh.point_normals.astype("<f8"), "Float64", 3)
+    if mesh.tcoords is not None:
+        attributes += ' TCoords="TCoords"'
+        arrays += _vtp_array("TCoords", mesh.tcoords.astype("<f8"), "Float64", 2)
+    point_data = f"<PointData{attributes}>{arrays}</PointData>" if arrays else ""
     conn = mesh.triangles.astype("<i8").ravel()
     offsets = np.arange(3, 3 * mesh.n_triangles + 1, 3, dtype="<i8")
     xml = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian" '

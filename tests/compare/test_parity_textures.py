@@ -42,3 +42,19 @@ def test_wrong_filter_fails_the_bars():
     """Sampling nearest where VTK filters linearly is caught (the check can fail)."""
     m = measure(render(tilted_quad("nearest", "repeat")), render_reference(tilted_quad("linear", "repeat")))
     assert failed_bars(m)
+
+
+@pytest.mark.parametrize("filt", ["nearest", "linear"])
+@pytest.mark.parametrize("name", ["globe", "textured-sphere"])
+def test_globe_and_textured_sphere_match_vtk(name, filt):
+    """PyVista's globe (its mesh and earth texture) and the built-in uv sphere, both filters: within the bars."""
+    import dataclasses
+
+    from lab.loading import load_scene
+
+    scene = load_scene(name)
+    obj = scene.objects[0]
+    obj = dataclasses.replace(obj, texture=dataclasses.replace(obj.texture, filter=filt))
+    scene = dataclasses.replace(scene, objects=(obj,))
+    m = measure(render(scene), render_reference(scene))
+    assert not failed_bars(m), m

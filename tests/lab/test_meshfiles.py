@@ -3,7 +3,8 @@
 Files are written with pyvista / VTK, read back with ``read_mesh`` and compared with
 ``pyvista.read``: same points, same triangles in the same order (VTK's own triangulation
 for triangles and strips; for quads our fan of VTK's polygons, since the project fans
-polygons while ``vtkTriangleFilter`` cuts quads differently), same unit normals.
+polygons while ``vtkTriangleFilter`` cuts quads differently), same unit normals, same
+texture coordinates (VTK's active ones).
 """
 from __future__ import annotations
 
@@ -35,7 +36,7 @@ def sphere(normals=True):
 
 
 def cube(normals=True):
-    """Quads, with Normals and TCoords (texture coordinates must be skipped)."""
+    """Quads, with Normals and TCoords (read as VTK's active texture coordinates)."""
     mesh = pv.Cube()
     if not normals:
         mesh.point_data.clear()
@@ -101,6 +102,11 @@ def assert_reads_like_vtk(path, normals=True):
         assert got.point_normals is None
     else:
         np.testing.assert_allclose(got.point_normals, n, atol=1e-6)
+    tcoords = pv.read(path).active_texture_coordinates  # VTK's active TCoords, or None
+    if tcoords is None:
+        assert got.tcoords is None
+    else:
+        np.testing.assert_array_equal(got.tcoords, np.asarray(tcoords, dtype=np.float64))
     assert got.points.dtype == np.float64 and got.triangles.dtype == np.int64
     return got
 
