@@ -5,7 +5,9 @@ kit), no anti-aliasing of any kind, the scene's camera with the clipping range s
 (or fitted by VTK's own ``ResetCameraClippingRange`` when the scene gives none), float
 colours set directly on ``vtkProperty``/``vtkLight``, the same triangles and point
 normals as scanlab's renderer, the model transform given to VTK as its column-vector
-matrix (the transpose of ours). Coverage comes from VTK's depth buffer.
+matrix (the transpose of ours). Coverage comes from VTK's depth buffer. VTK always
+removes hidden surfaces with its z-buffer, whatever ``[render] hidden_surface`` says:
+against it the painter's algorithm shows where it fails.
 """
 from __future__ import annotations
 
@@ -93,6 +95,7 @@ def _actor(pv, obj, scene):
     prop.SetOpacity(m.opacity)
     prop.SetInterpolation(INTERPOLATION[obj.shading])
     prop.SetLighting(m.lighting)
+    prop.SetBackfaceCulling(scene.render.cull_backfaces)
     return actor
 
 

@@ -16,8 +16,8 @@ import numpy as np
 
 from lab import shapes
 from lab.mesh import Mesh
-from lab.scene import (INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, Camera, Image, Light, Material, RenderSettings,
-                       Scene, SceneObject, headlight)
+from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, Camera, Image, Light, Material,
+                       RenderSettings, Scene, SceneObject, headlight)
 from renderer.transform import model_matrix
 
 MAX_SIZE = 8192
@@ -250,8 +250,11 @@ def _normals(s: _Section, mesh: Mesh, table: dict) -> Mesh:
 
 
 def _render(src, table) -> RenderSettings:
-    s = _Section(src, "render", table, {"interpolation", "global_ambient", "local_viewer", "ambient"})
+    s = _Section(src, "render", table, {"interpolation", "global_ambient", "local_viewer", "ambient",
+                                        "hidden_surface", "cull_backfaces"})
     return RenderSettings(interpolation=s.choice("interpolation", "perspective", INTERPOLATIONS),
+                          hidden_surface=s.choice("hidden_surface", "zbuffer", HIDDEN_SURFACES),
+                          cull_backfaces=s.flag("cull_backfaces", False),
                           global_ambient=s.colour("global_ambient", (0.2, 0.2, 0.2)),
                           local_viewer=s.flag("local_viewer", False), ambient=s.colour("ambient", (1.0, 1.0, 1.0)))
 

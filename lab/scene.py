@@ -21,6 +21,7 @@ SHADINGS = ("flat", "gouraud", "phong")
 MODELS = ("vtk", "opengl", "classic")
 LIGHT_KINDS = ("scene", "camera", "headlight", "eye")
 INTERPOLATIONS = ("perspective", "screen")
+HIDDEN_SURFACES = ("zbuffer", "painter", "none")
 
 Vec3 = tuple[float, float, float]
 
@@ -155,12 +156,17 @@ class RenderSettings:
     global_ambient : OpenGL's light-model ambient, linear RGB (GL default 0.2 grey).
     local_viewer : OpenGL's GL_LIGHT_MODEL_LOCAL_VIEWER (default: infinite viewer).
     ambient : the classic model's ambient light colour A, linear RGB.
+    hidden_surface : "zbuffer" (LEQUAL depth test), "painter" (back to front by centroid
+        depth, no depth test) or "none" (draw order, no depth test).
+    cull_backfaces : drop triangles that are clockwise on screen (VTK culls none by default).
     """
 
     interpolation: str = "perspective"
     global_ambient: Vec3 = (0.2, 0.2, 0.2)
     local_viewer: bool = False
     ambient: Vec3 = (1.0, 1.0, 1.0)
+    hidden_surface: str = "zbuffer"
+    cull_backfaces: bool = False
 
 
 @dataclass(frozen=True, eq=False)

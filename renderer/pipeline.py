@@ -17,6 +17,7 @@ from lab.frame import Frame
 from renderer.camera import clipping_range, view_to_clip, world_to_view
 from renderer.clip import clip_triangles
 from renderer.lighting import UNLIT, view_lights
+from renderer.painter import painter_order
 from renderer.raster import rasterize_triangles
 from renderer.shading import (FACE_COLOUR, TEXTBOOK_PIXEL, VERTEX_COLOUR, VTK_FLAT, VTK_SMOOTH, Fragments,
                                ObjectTable, shade, to_8bit)
@@ -183,8 +184,14 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     ws = thread_workspace()
     tri_clip, clip_bary, clip_source = clip_triangles(geo.verts_clip, geo.triangles, ws)
     tri_window, tri_fixed = clip_to_window(tri_clip, width, height, ws)
+    hidden = scene.render.hidden_surface
+    if hidden == "painter":  # back to front; the fragments then simply overwrite
+        order = painter_order(tri_window)
+        tri_clip, clip_bary, clip_source = tri_clip[order], clip_bary[order], clip_source[order]
+        tri_window, tri_fixed = tri_window[order], tri_fixed[order]
     depth, tri_index, bary, front = rasterize_triangles(tri_fixed, tri_window, width, height, options.fill_rule,
-                                                        ws=ws)
+                                                        ws=ws, depth_test=hidden == "zbuffer",
+                                                        cull_back=scene.render.cull_backfaces)
 
     lights = view_lights(scene.lights, cam, w2v)
     objs = object_table(scene, lights.complexity)

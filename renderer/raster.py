@@ -87,7 +87,7 @@ def scanline_span(f, row, rule=TOP_LEFT):
 
 
 @njit(cache=True, parallel=True)
-def setup_triangles(tri_fixed, tri_window, height, front, ccw, rows, plane):
+def setup_triangles(tri_fixed, tri_window, height, cull_back, front, ccw, rows, plane):
     """Per-triangle set-up, once: facing, counter-clockwise fixed vertices, rows, planes.
 
     Writes ``front`` (K,) bool; ``ccw`` (K, 3, 2) fixed vertices ordered
@@ -95,6 +95,7 @@ def setup_triangles(tri_fixed, tri_window, height, front, ccw, rows, plane):
     pixel centres it may cover (empty when first > last: zero area or off-screen);
     ``plane`` (K, 9): x0, y0, z0, e1x, e1y, dz1, e2x, e2y, dz2 — vertex 0 and the edges to
     vertices 1 and 2 in float window coordinates, in the triangle's own vertex order.
+    With ``cull_back`` a back-facing (clockwise) triangle gets no rows: back-face culling.
     """
     for k in prange(tri_fixed.shape[0]):
         area = signed_area_fixed(tri_fixed[k])
@@ -112,12 +113,12 @@ def setup_triangles(tri_fixed, tri_window, height, front, ccw, rows, plane):
         ys = tri_fixed[k, :, 1]
         rows[k, 0] = max(0, ceil_div(ys.min(), SUBPIXEL))
         rows[k, 1] = min(height - 1, ys.max() // SUBPIXEL)
-        if area == 0 or a2 == 0.0:
+        if area == 0 or a2 == 0.0 or (cull_back and area < 0):  # nothing to draw, or a culled back face
             rows[k, 0], rows[k, 1] = 1, 0
 
 
 @njit(cache=True, inline="always")
-def fill_row(k, row, ccw, plane, width, rule, depth, tri_index, bary):
+def fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary):
     """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes."""
     first, last = scanline_span(ccw[k], row, rule)
     first = max(first, 0)
@@ -135,7 +136,7 @@ def fill_row(k, row, ccw, plane, width, rule, depth, tri_index, bary):
         l2 = (e1x * py - px * e1y) / a2
         z = z0 + l1 * dz1 + l2 * dz2
         z = np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5) / DEPTH_MAX
-        if z <= depth[row, col]:
+        if z <= depth[row, col] or not depth_test:
             depth[row, col] = z
             tri_index[row, col] = k
             bary[row, col, 0] = l1
@@ -143,13 +144,15 @@ def fill_row(k, row, ccw, plane, width, rule, depth, tri_index, bary):
 
 
 @njit(cache=True, parallel=True)
-def rasterize(ccw, rows, plane, width, height, n_bands, rule, depth, tri_index, bary):
+def rasterize(ccw, rows, plane, width, height, n_bands, rule, depth_test, depth, tri_index, bary):
     """Scan-convert every triangle into the visibility buffer (the loop kernel).
 
     The image is cut into ``n_bands`` bands of whole rows, filled in parallel; each band
     clears its rows and then draws *every* triangle in order, clipped to its rows. A
     pixel belongs to one band and sees the triangles in draw order, so the result is the
-    same, bit for bit, as a serial loop (z-buffer ties included).
+    same, bit for bit, as a serial loop (z-buffer ties included). ``depth_test`` False
+    draws every fragment over what is there (the painter's algorithm, or no hidden-surface
+    removal at all): then the last triangle drawn wins.
     depth (H, W) float, tri_index (H, W) int64 (−1 = empty), bary (H, W, 2): outputs, in
     window rows (y up); bary holds the screen-space weights of vertices 1 and 2.
     """
@@ -165,16 +168,18 @@ def rasterize(ccw, rows, plane, width, height, n_bands, rule, depth, tri_index, 
             lo = max(rows[k, 0], r0)
             hi = min(rows[k, 1], r1)
             for row in range(lo, hi + 1):
-                fill_row(k, row, ccw, plane, width, rule, depth, tri_index, bary)
+                fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary)
 
 
 def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
-                        fill_rule: str = "top-left", n_bands: int | None = None, ws=None):
+                        fill_rule: str = "top-left", n_bands: int | None = None, ws=None,
+                        depth_test: bool = True, cull_back: bool = False):
     """Allocate the visibility buffer and fill it (the Python wrapper).
 
     Returns ``depth`` (H, W), ``tri_index`` (H, W), ``bary`` (H, W, 2) in window rows
     (y up) and ``front`` (K,) per triangle. ``n_bands`` defaults to two per thread.
-    With a workspace ``ws`` every array lives in it.
+    With a workspace ``ws`` every array lives in it. ``depth_test=False`` turns the
+    z-buffer test off; ``cull_back=True`` drops back-facing triangles.
     """
     tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
@@ -188,9 +193,10 @@ def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: in
     ccw = empty(ws, "raster.ccw", (k_count, 3, 2), np.int64)
     rows = empty(ws, "raster.rows", (k_count, 2), np.int64)
     plane = empty(ws, "raster.plane", (k_count, 9))
-    setup_triangles(tri_fixed, tri_window, height, front, ccw, rows, plane)
+    setup_triangles(tri_fixed, tri_window, height, bool(cull_back), front, ccw, rows, plane)
     depth = empty(ws, "raster.depth", (height, width))
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int64)
     bary = empty(ws, "raster.bary", (height, width, 2))  # read only where tri_index ≥ 0
-    rasterize(ccw, rows, plane, width, height, n_bands, FILL_RULES[fill_rule], depth, tri_index, bary)
+    rasterize(ccw, rows, plane, width, height, n_bands, FILL_RULES[fill_rule], bool(depth_test), depth, tri_index,
+              bary)
     return depth, tri_index, bary, front
