@@ -5,7 +5,8 @@ kit), no anti-aliasing of any kind, the scene's camera with the clipping range s
 (or fitted by VTK's own ``ResetCameraClippingRange`` when the scene gives none), float
 colours set directly on ``vtkProperty``/``vtkLight``, the same triangles and point
 normals as scanlab's renderer, the model transform given to VTK as its column-vector
-matrix (the transpose of ours). Coverage comes from VTK's depth buffer. VTK always
+matrix (the transpose of ours). Coverage comes from VTK's depth buffer (with translucent
+props, from a second render with every prop opaque: see :func:`opaque_coverage`). VTK always
 removes hidden surfaces with its z-buffer, whatever ``[render] hidden_surface`` says:
 against it the painter's algorithm shows where it fails.
 """
@@ -138,6 +139,28 @@ def _set_camera(renderer, cam):
         renderer.ResetCameraClippingRange()
 
 
+MAX_PEELS = 1000
+"""Peels for exact depth peeling: more than any pixel here has layers (with occlusion ratio 0
+VTK stops as soon as a peel adds nothing)."""
+
+
+def _set_transparency(pl, mode: str):
+    """VTK's compositing of translucent props, configured as ``[render] transparency`` asks.
+
+    "oit": VTK's default weighted-average order-independent transparency (PyVista leaves
+    depth peeling off; OIT is set on explicitly). "depth_peeling" and "sorted": exact depth
+    peeling — occlusion ratio 0 and :data:`MAX_PEELS` peels. Not 0 peels, although
+    PyVista documents 0 as "no limit": VTK 9.7's dual depth peeling then stops at once
+    and blends what is left in draw order (red before green gives green over red).
+    """
+    if mode == "oit":
+        pl.disable_depth_peeling()
+        pl.renderer.SetUseOIT(True)
+    else:
+        if not pl.enable_depth_peeling(number_of_peels=MAX_PEELS, occlusion_ratio=0.0):
+            raise RuntimeError("VTK cannot do depth peeling on this OpenGL context")
+
+
 def build_plotter(scene, reference: str | None = None):
     """A PyVista offscreen plotter holding the scene, ready to render (not yet rendered).
 
@@ -152,6 +175,7 @@ def build_plotter(scene, reference: str | None = None):
     pl.disable_anti_aliasing()
     pl.renderer.SetBackground(*scene.image.background)
     pl.renderer.SetTwoSidedLighting(True)
+    _set_transparency(pl, scene.render.transparency)
     actors = [_actor(pv, obj, scene) for obj in scene.objects]
     for actor in actors:
         pl.renderer.AddActor(actor)
@@ -186,6 +210,26 @@ def read_frame(pl) -> Frame:
     return Frame(rgb=np.ascontiguousarray(rgb), depth=np.ascontiguousarray(depth), coverage=depth < 1.0)
 
 
+def opaque_coverage(pl) -> np.ndarray:
+    """Which pixels VTK's rasteriser covers, translucent props included (row 0 at the top).
+
+    VTK writes no depth for translucent fragments (neither with OIT nor with depth
+    peeling), so its depth buffer misses the pixels only translucent props cover. This
+    renders the same plotter once more with every prop opaque (same triangles, same
+    rasteriser) and reads that depth buffer; the opacities are then put back.
+    """
+    collection = pl.renderer.GetActors()
+    actors = [collection.GetItemAsObject(i) for i in range(collection.GetNumberOfItems())]
+    saved = [a.GetProperty().GetOpacity() for a in actors]
+    for a in actors:
+        a.GetProperty().SetOpacity(1.0)
+    pl.ren_win.Render()
+    coverage = read_frame(pl).coverage
+    for a, opacity in zip(actors, saved):
+        a.GetProperty().SetOpacity(opacity)
+    return coverage
+
+
 def render_reference(scene, timings: dict | None = None, reference: str | None = None) -> Frame:
     """Draw ``scene`` with VTK offscreen and return its :class:`Frame`.
 
@@ -202,6 +246,8 @@ def render_reference(scene, timings: dict | None = None, reference: str | None =
         frame = read_frame(pl)
         if timings is not None:
             timings["reference_ms"] = (time.perf_counter() - t0) * 1e3
+        if any(obj.material.opacity < 1.0 for obj in scene.objects):
+            frame = Frame(rgb=frame.rgb, depth=frame.depth, coverage=opaque_coverage(pl))
         return frame
     finally:
         pl.close()

@@ -100,6 +100,25 @@ def lit_colours(obj, actor, renderer, scene, lights) -> tuple[np.ndarray, str]:
     return rgb, where
 
 
+def unshare_points(poly):
+    """A copy of triangle-only ``poly`` in which every triangle has its own three points
+    (same coordinates, same order), so a per-triangle value can be a point value."""
+    import vtk
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+    points = vtk_to_numpy(poly.GetPoints().GetData())
+    triangles = vtk_to_numpy(poly.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    out = vtk.vtkPolyData()
+    pts = vtk.vtkPoints()
+    pts.SetData(numpy_to_vtk(np.ascontiguousarray(points[triangles.reshape(-1)]), deep=True))
+    out.SetPoints(pts)
+    cells = vtk.vtkCellArray()
+    cells.SetData(3, numpy_to_vtk(np.arange(triangles.size, dtype=np.int64), deep=True,
+                                  array_type=vtk.VTK_ID_TYPE))
+    out.SetPolys(cells)
+    return out
+
+
 def paint_unlit(actor, rgb: np.ndarray, where: str) -> None:
     """Have VTK draw ``rgb`` (0..1) unlit: one colour per cell, or interpolated from points.
 
@@ -108,12 +127,18 @@ def paint_unlit(actor, rgb: np.ndarray, where: str) -> None:
     attribute read by a two-line shader replacement: VTK's own 8-bit point colours would
     be rounded *before* interpolation, a half-step error the fixed-function pipeline
     does not have. Either way VTK rasterises and interpolates (perspective-correctly).
+    A translucent object's cell colours go in as float point colours of unshared
+    vertices (:func:`unshare_points`): blending would show their 8-bit rounding.
     """
     import vtk
     from vtkmodules.util.numpy_support import numpy_to_vtk
 
     mapper = actor.GetMapper()
     poly = mapper.GetInput()
+    if where == "cells" and actor.GetProperty().GetOpacity() < 1.0:
+        poly = unshare_points(poly)
+        mapper.SetInputData(poly)
+        rgb, where = np.repeat(rgb, 3, axis=0), "points"
     if where == "cells":
         colours = numpy_to_vtk(np.rint(np.clip(rgb, 0.0, 1.0) * 255.0).astype(np.uint8), deep=True,
                                array_type=vtk.VTK_UNSIGNED_CHAR)
@@ -139,7 +164,8 @@ def paint_unlit(actor, rgb: np.ndarray, where: str) -> None:
                                   False)
     sp.AddFragmentShaderReplacement("//VTK::Color::Dec", True, "//VTK::Color::Dec\nin vec3 litColourVSOut;\n",
                                     False)
-    sp.AddFragmentShaderReplacement("//VTK::Light::Impl", True, "fragOutput0 = vec4(litColourVSOut, 1.0);\n",
+    opacity = actor.GetProperty().GetOpacity()
+    sp.AddFragmentShaderReplacement("//VTK::Light::Impl", True, f"fragOutput0 = vec4(litColourVSOut, {opacity:.9g});\n",
                                     False)
 
 
@@ -195,7 +221,7 @@ def phong_shader(obj, scene, lights: list[EyeLight]) -> str:
                      f"      float sf = pow(max(dot(R, V), 0.0), {m.specular_power:.9g});\n"
                      f"      c += att * {_vec3(li.colour)} * ({_vec3(m.diffuse * o)} * ndl + {m.specular:.9g} * sf);\n"
                      "    }\n  }\n")
-    return head + body + "  fragOutput0 = vec4(clamp(c, 0.0, 1.0), 1.0);\n"
+    return head + body + f"  fragOutput0 = vec4(clamp(c, 0.0, 1.0), {m.opacity:.9g});\n"
 
 
 def replace_light_shader(actor, code: str) -> None:

@@ -16,8 +16,8 @@ import numpy as np
 
 from lab import shapes
 from lab.mesh import Mesh
-from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, Camera, Image, Light, Material,
-                       RenderSettings, Scene, SceneObject, headlight)
+from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, TRANSPARENCIES, Camera, Image,
+                       Light, Material, RenderSettings, Scene, SceneObject, headlight)
 from renderer.transform import model_matrix
 
 MAX_SIZE = 8192
@@ -191,8 +191,6 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
                    shininess=s.number("shininess", 0.0, 0.0, 128.0))
     mesh = _normals(s, mesh, table)
     texture = _texture(s, base, mesh, table)
-    if mat.opacity != 1.0:
-        raise s.error("opacity", f"{mat.opacity:g}: translucency is not drawn yet; only 1.0 is accepted")
     m = model_matrix(scale=s.vector("scale", (1.0, 1.0, 1.0)), rotate=s.vector("rotate", (0.0, 0.0, 0.0)),
                      translate=s.vector("translate", (0.0, 0.0, 0.0)))
     if abs(np.linalg.det(m[:3, :3])) < 1e-300:
@@ -251,10 +249,11 @@ def _normals(s: _Section, mesh: Mesh, table: dict) -> Mesh:
 
 def _render(src, table) -> RenderSettings:
     s = _Section(src, "render", table, {"interpolation", "global_ambient", "local_viewer", "ambient",
-                                        "hidden_surface", "cull_backfaces"})
+                                        "hidden_surface", "cull_backfaces", "transparency"})
     return RenderSettings(interpolation=s.choice("interpolation", "perspective", INTERPOLATIONS),
                           hidden_surface=s.choice("hidden_surface", "zbuffer", HIDDEN_SURFACES),
                           cull_backfaces=s.flag("cull_backfaces", False),
+                          transparency=s.choice("transparency", "oit", TRANSPARENCIES),
                           global_ambient=s.colour("global_ambient", (0.2, 0.2, 0.2)),
                           local_viewer=s.flag("local_viewer", False), ambient=s.colour("ambient", (1.0, 1.0, 1.0)))
 

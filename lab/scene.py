@@ -22,6 +22,7 @@ MODELS = ("vtk", "opengl", "classic")
 LIGHT_KINDS = ("scene", "camera", "headlight", "eye")
 INTERPOLATIONS = ("perspective", "screen")
 HIDDEN_SURFACES = ("zbuffer", "painter", "none")
+TRANSPARENCIES = ("oit", "depth_peeling", "sorted")
 
 Vec3 = tuple[float, float, float]
 
@@ -159,6 +160,9 @@ class RenderSettings:
     hidden_surface : "zbuffer" (LEQUAL depth test), "painter" (back to front by centroid
         depth, no depth test) or "none" (draw order, no depth test).
     cull_backfaces : drop triangles that are clockwise on screen (VTK culls none by default).
+    transparency : how objects with opacity < 1 are composited (:mod:`renderer.translucency`):
+        "oit" (VTK's default weighted-average order-independent blend), "depth_peeling"
+        (exact, front to back) or "sorted" (back to front, "over" per fragment).
     """
 
     interpolation: str = "perspective"
@@ -167,6 +171,7 @@ class RenderSettings:
     ambient: Vec3 = (1.0, 1.0, 1.0)
     hidden_surface: str = "zbuffer"
     cull_backfaces: bool = False
+    transparency: str = "oit"
 
 
 @dataclass(frozen=True, eq=False)

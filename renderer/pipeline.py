@@ -4,7 +4,9 @@
 (:mod:`renderer.camera`), 4. clipping (:mod:`renderer.clip`), 5. window mapping and
 sub-pixel snapping (:mod:`renderer.window`), 6. scanline fill with the top-left rule and
 the z-buffer (:mod:`renderer.raster`), 7. shading (:mod:`renderer.shading`,
-:mod:`renderer.lighting`), 8. 8-bit output with the flip to image rows.
+:mod:`renderer.lighting`), 8. 8-bit output with the flip to image rows. Objects with
+opacity < 1 skip the z-buffer: after the opaque frame is shaded they are composited over
+it from per-pixel fragment lists (:mod:`renderer.translucency`).
 """
 from __future__ import annotations
 
@@ -23,6 +25,7 @@ from renderer.shading import (FACE_COLOUR, TEXTBOOK_PIXEL, VERTEX_COLOUR, VTK_FL
                                ObjectTable, shade, to_8bit)
 from renderer.textbook_lighting import CLASSIC, OPENGL, light_faces, light_vertices
 from renderer.texture import CLAMP, LINEAR, NEAREST, REPEAT
+from renderer.translucency import draw_translucent
 from renderer.transform import normal_matrix, transform_points
 from renderer.window import clip_to_window, window_rows_to_image_rows
 from renderer.workspace import empty, thread_workspace
@@ -167,7 +170,8 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     """Draw ``scene`` with scanlab's own pipeline.
 
     Returns a :class:`lab.frame.Frame`: ``rgb`` (H, W, 3) uint8 with row 0 at the top,
-    ``depth`` window depth (1.0 where empty), ``coverage``.
+    ``depth`` window depth of the opaque surfaces (1.0 where empty; translucent ones write
+    none, as in VTK), ``coverage`` (any surface, opaque or translucent).
 
     Examples
     --------
@@ -189,8 +193,12 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
         order = painter_order(tri_window)
         tri_clip, clip_bary, clip_source = tri_clip[order], clip_bary[order], clip_source[order]
         tri_window, tri_fixed = tri_window[order], tri_fixed[order]
-    depth, tri_index, bary, front = rasterize_triangles(tri_fixed, tri_window, width, height, options.fill_rule,
-                                                        ws=ws, depth_test=hidden == "zbuffer",
+    # opaque objects through the z-buffer; translucent ones (opacity < 1) afterwards, as fragment lists
+    opacity = np.array([obj.material.opacity for obj in scene.objects], np.float64)
+    translucent = opacity[geo.tri_object[clip_source]] < 1.0
+    opaque = ~translucent if translucent.any() else slice(None)
+    depth, tri_index, bary, front = rasterize_triangles(tri_fixed[opaque], tri_window[opaque], width, height,
+                                                        options.fill_rule, ws=ws, depth_test=hidden == "zbuffer",
                                                         cull_back=scene.render.cull_backfaces)
 
     lights = view_lights(scene.lights, cam, w2v)
@@ -198,8 +206,15 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     vert_colour, face_colour = textbook_colours(geo, objs, lights, ws)
     interpolation = options.interpolation or scene.render.interpolation
     rgb = np.empty((height, width, 3), np.uint8)
-    shade(Fragments(tri_index, bary, front, tri_clip, clip_bary, clip_source), geo, objs, lights, vert_colour,
-          face_colour, bool(cam.parallel), interpolation == "perspective", to_8bit(np.asarray(scene.image.background)),
-          rgb)
+    shade(Fragments(tri_index, bary, front, tri_clip[opaque], clip_bary[opaque], clip_source[opaque]), geo, objs,
+          lights, vert_colour, face_colour, bool(cam.parallel), interpolation == "perspective",
+          to_8bit(np.asarray(scene.image.background)), rgb)
+    coverage = tri_index >= 0
+    if translucent.any():
+        coverage = coverage | draw_translucent(
+            tri_fixed[translucent], tri_window[translucent], tri_clip[translucent], clip_bary[translucent],
+            clip_source[translucent], depth, rgb, geo, objs, lights, vert_colour, face_colour, opacity,
+            scene.render.transparency, bool(cam.parallel), interpolation == "perspective", options.fill_rule,
+            depth_test=hidden == "zbuffer", cull_back=scene.render.cull_backfaces, ws=ws)
     return Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth.copy()),
-                 coverage=window_rows_to_image_rows(tri_index >= 0))
+                 coverage=window_rows_to_image_rows(coverage))

@@ -118,24 +118,35 @@ def setup_triangles(tri_fixed, tri_window, height, cull_back, front, ccw, rows, 
 
 
 @njit(cache=True, inline="always")
-def fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary):
-    """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes."""
+def row_span(k, row, ccw, width, rule):
+    """Columns [first, last] of triangle ``k`` on ``row``, clamped to the image (first > last: none)."""
     first, last = scanline_span(ccw[k], row, rule)
-    first = max(first, 0)
-    last = min(last, width - 1)
-    if first > last:
-        return
+    return max(first, 0), min(last, width - 1)
+
+
+@njit(cache=True, inline="always")
+def pixel_fragment(k, row, col, plane):
+    """Triangle ``k`` at the centre of pixel (row, col): screen-space weights l1, l2 of its
+    vertices 1 and 2, and the window depth rounded to the 24-bit depth buffer."""
     x0, y0, z0 = plane[k, 0], plane[k, 1], plane[k, 2]
     e1x, e1y, dz1 = plane[k, 3], plane[k, 4], plane[k, 5]
     e2x, e2y, dz2 = plane[k, 6], plane[k, 7], plane[k, 8]
     a2 = e1x * e2y - e2x * e1y
     py = row + 0.5 - y0
+    px = col + 0.5 - x0
+    l1 = (px * e2y - e2x * py) / a2
+    l2 = (e1x * py - px * e1y) / a2
+    z = z0 + l1 * dz1 + l2 * dz2
+    z = np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5) / DEPTH_MAX
+    return l1, l2, z
+
+
+@njit(cache=True, inline="always")
+def fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary):
+    """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes."""
+    first, last = row_span(k, row, ccw, width, rule)
     for col in range(first, last + 1):
-        px = col + 0.5 - x0
-        l1 = (px * e2y - e2x * py) / a2
-        l2 = (e1x * py - px * e1y) / a2
-        z = z0 + l1 * dz1 + l2 * dz2
-        z = np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5) / DEPTH_MAX
+        l1, l2, z = pixel_fragment(k, row, col, plane)
         if z <= depth[row, col] or not depth_test:
             depth[row, col] = z
             tri_index[row, col] = k
@@ -171,6 +182,18 @@ def rasterize(ccw, rows, plane, width, height, n_bands, rule, depth_test, depth,
                 fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary)
 
 
+def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back: bool, ws=None, name="raster"):
+    """Allocate (in workspace ``ws`` under ``name``) and run :func:`setup_triangles`:
+    returns ``front``, ``ccw``, ``rows``, ``plane``."""
+    k_count = len(tri_fixed)
+    front = empty(ws, f"{name}.front", k_count, np.bool_)
+    ccw = empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64)
+    rows = empty(ws, f"{name}.rows", (k_count, 2), np.int64)
+    plane = empty(ws, f"{name}.plane", (k_count, 9))
+    setup_triangles(tri_fixed, tri_window, height, bool(cull_back), front, ccw, rows, plane)
+    return front, ccw, rows, plane
+
+
 def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
                         fill_rule: str = "top-left", n_bands: int | None = None, ws=None,
                         depth_test: bool = True, cull_back: bool = False):
@@ -188,12 +211,7 @@ def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: in
     if n_bands is None:
         n_bands = 2 * numba.get_num_threads()
     n_bands = max(1, min(int(n_bands), height))
-    k_count = len(tri_fixed)
-    front = empty(ws, "raster.front", k_count, np.bool_)
-    ccw = empty(ws, "raster.ccw", (k_count, 3, 2), np.int64)
-    rows = empty(ws, "raster.rows", (k_count, 2), np.int64)
-    plane = empty(ws, "raster.plane", (k_count, 9))
-    setup_triangles(tri_fixed, tri_window, height, bool(cull_back), front, ccw, rows, plane)
+    front, ccw, rows, plane = set_up(tri_fixed, tri_window, height, cull_back, ws, "raster")
     depth = empty(ws, "raster.depth", (height, width))
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int64)
     bary = empty(ws, "raster.bary", (height, width, 2))  # read only where tri_index ≥ 0

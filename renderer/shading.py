@@ -152,19 +152,66 @@ def normalise(n):
             n[c] /= length
 
 
-@njit(cache=True, parallel=True)
-def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, perspective, background, rgb):
-    """Colour every covered pixel and store 8-bit RGB (the loop kernel).
+@njit(cache=True, inline="always")
+def fragment_colour(frags, k, l1, l2, geo, objs, lights, vert_colour, face_colour, parallel_camera, perspective,
+                    w, n, p, tex, out):
+    """The linear colour of one fragment of clipped triangle ``k`` with screen-space weights
+    ``l1, l2`` (of its vertices 1 and 2) into ``out``; ``w, n, p, tex`` are (3,) scratch.
 
     Per object kind: VTK's per-fragment lighting with the plane normal (VTK_FLAT) or the
     interpolated normal (VTK_SMOOTH); a lit colour per triangle (FACE_COLOUR) or
     interpolated from lit vertices (VERTEX_COLOUR, Gouraud); the textbook model per
-    pixel with the interpolated normal (TEXTBOOK_PIXEL, Phong).
+    pixel with the interpolated normal (TEXTBOOK_PIXEL, Phong). Only the clipped-triangle
+    tables of ``frags`` (front, tri_clip, clip_bary, clip_source) are read.
+    """
+    tris, verts = geo.triangles, geo.verts_view
+    fragment_weights(k, l1, l2, frags.tri_clip, frags.clip_bary, perspective, w)
+    s = frags.clip_source[k]
+    o = geo.tri_object[s]
+    i0, i1, i2 = tris[s, 0], tris[s, 1], tris[s, 2]
+    kind = objs.kind[o]
+    if kind == FACE_COLOUR:
+        for c in range(3):
+            out[c] = face_colour[s, c]
+    elif kind == VERTEX_COLOUR:
+        interpolate(w, vert_colour, i0, i1, i2, out)
+    else:
+        interpolate(w, verts, i0, i1, i2, p)
+        if kind == VTK_FLAT:
+            plane_normal(verts[i0], verts[i1], verts[i2], n)
+            if (n[2] < 0.0) if parallel_camera else (n[0] * p[0] + n[1] * p[1] + n[2] * p[2] > 0.0):
+                for c in range(3):
+                    n[c] = -n[c]
+        else:
+            interpolate(w, geo.normals_view, i0, i1, i2, n)
+            normalise(n)
+            if kind == VTK_SMOOTH and not frags.front[k]:
+                for c in range(3):
+                    n[c] = -n[c]
+        if kind == TEXTBOOK_PIXEL:
+            textbook_lighting(objs.model[o], n, p, objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
+                              objs.global_ambient, objs.local_viewer, objs.ambient_light, lights, out)
+        else:
+            vtk_lighting(n, p, objs.complexity[o], objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
+                         lights, out)
+    if objs.textured[o]:  # the texture multiplies the whole lit colour (VTK, GL_MODULATE)
+        ts = w[0] * geo.tcoords[i0, 0] + w[1] * geo.tcoords[i1, 0] + w[2] * geo.tcoords[i2, 0]
+        tt = w[0] * geo.tcoords[i0, 1] + w[1] * geo.tcoords[i1, 1] + w[2] * geo.tcoords[i2, 1]
+        sample(objs.texels, objs.tex_offset[o], objs.tex_width[o], objs.tex_height[o], objs.tex_filter[o],
+               objs.tex_wrap[o], ts, tt, tex)
+        for c in range(3):
+            out[c] *= tex[c]
+
+
+@njit(cache=True, parallel=True)
+def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, perspective, background, rgb):
+    """Colour every covered pixel and store 8-bit RGB (the loop kernel).
+
+    Each covered pixel gets :func:`fragment_colour` of its visible fragment.
     Rows are independent and each pixel is written once, so ``prange`` over rows gives
     the same bytes as a serial loop. ``background`` is the 8-bit clear colour.
     """
     height, width = frags.tri_index.shape
-    tris, verts = geo.triangles, geo.verts_view
     for row in prange(height):
         w = np.empty(3)
         n = np.empty(3)
@@ -177,42 +224,7 @@ def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, p
                 for c in range(3):
                     rgb[row, col, c] = background[c]
                 continue
-            fragment_weights(k, frags.bary[row, col, 0], frags.bary[row, col, 1], frags.tri_clip, frags.clip_bary,
-                             perspective, w)
-            s = frags.clip_source[k]
-            o = geo.tri_object[s]
-            i0, i1, i2 = tris[s, 0], tris[s, 1], tris[s, 2]
-            kind = objs.kind[o]
-            if kind == FACE_COLOUR:
-                for c in range(3):
-                    out[c] = face_colour[s, c]
-            elif kind == VERTEX_COLOUR:
-                interpolate(w, vert_colour, i0, i1, i2, out)
-            else:
-                interpolate(w, verts, i0, i1, i2, p)
-                if kind == VTK_FLAT:
-                    plane_normal(verts[i0], verts[i1], verts[i2], n)
-                    if (n[2] < 0.0) if parallel_camera else (n[0] * p[0] + n[1] * p[1] + n[2] * p[2] > 0.0):
-                        for c in range(3):
-                            n[c] = -n[c]
-                else:
-                    interpolate(w, geo.normals_view, i0, i1, i2, n)
-                    normalise(n)
-                    if kind == VTK_SMOOTH and not frags.front[k]:
-                        for c in range(3):
-                            n[c] = -n[c]
-                if kind == TEXTBOOK_PIXEL:
-                    textbook_lighting(objs.model[o], n, p, objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
-                                      objs.global_ambient, objs.local_viewer, objs.ambient_light, lights, out)
-                else:
-                    vtk_lighting(n, p, objs.complexity[o], objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
-                                 lights, out)
-            if objs.textured[o]:  # the texture multiplies the whole lit colour (VTK, GL_MODULATE)
-                ts = w[0] * geo.tcoords[i0, 0] + w[1] * geo.tcoords[i1, 0] + w[2] * geo.tcoords[i2, 0]
-                tt = w[0] * geo.tcoords[i0, 1] + w[1] * geo.tcoords[i1, 1] + w[2] * geo.tcoords[i2, 1]
-                sample(objs.texels, objs.tex_offset[o], objs.tex_width[o], objs.tex_height[o], objs.tex_filter[o],
-                       objs.tex_wrap[o], ts, tt, tex)
-                for c in range(3):
-                    out[c] *= tex[c]
+            fragment_colour(frags, k, frags.bary[row, col, 0], frags.bary[row, col, 1], geo, objs, lights,
+                            vert_colour, face_colour, parallel_camera, perspective, w, n, p, tex, out)
             for c in range(3):
                 rgb[row, col, c] = unorm8(out[c])
