@@ -188,7 +188,8 @@ def build_plotter(scene, reference: str | None = None):
         lights = with_gl_colours(eye_lights(pl.renderer), scene)
         for obj, actor in textbook:
             if object_reference(obj, reference) == SHADER:
-                replace_light_shader(actor, phong_shader(obj, scene, lights))
+                replace_light_shader(actor, phong_shader(obj, scene, lights),
+                                     scene.render.separate_specular and obj.material.model == "opengl")
             else:
                 paint_unlit(actor, *lit_colours(obj, actor, pl.renderer, scene, lights))
     return pl

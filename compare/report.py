@@ -55,6 +55,16 @@ def write_json(path: Path, data: dict) -> None:
         raise
 
 
+def reference_label(scene, reference: str | None = None) -> str:
+    """The reference's name for ``metrics.json``: :func:`compare.textbook_reference.scene_reference`,
+    with ``+separate-specular`` when opengl objects have their specular colour added after
+    the texture (a float vertex attribute or the replaced shader's own term, added after
+    VTK's texture modulation in the same render)."""
+    name = scene_reference(scene, reference)
+    separate = scene.render.separate_specular and any(o.material.model == "opengl" for o in scene.objects)
+    return name + "+separate-specular" if separate and name != "vtk-native" else name
+
+
 def compare_scene(scene, out_dir, name: str | None = None, reference: str | None = None) -> dict:
     """Render ``scene`` both ways, measure, write the five output files; return the metrics.
 
@@ -73,7 +83,7 @@ def compare_scene(scene, out_dir, name: str | None = None, reference: str | None
     shared, mismatch = coverage_masks(ours, ref)
     result = {"scene": name or scene.source, "shading": shading_label(scene), "size": list(scene.image.size),
               **metrics, "ours_ms": round(ours_ms, 3), "reference_ms": round(timings["reference_ms"], 3),
-              "model": model_label(scene), "reference": scene_reference(scene, reference)}
+              "model": model_label(scene), "reference": reference_label(scene, reference)}
     write_png(out / "ours.png", ours.rgb)
     write_png(out / "vtk.png", ref.rgb)
     delta_e_figure(de, mismatch, out / "delta_e.png", shared=shared)

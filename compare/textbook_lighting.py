@@ -47,7 +47,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["EyeLight", "unit", "face_points_and_normals", "opengl_colours", "classic_colours"]
+__all__ = ["EyeLight", "unit", "face_points_and_normals", "opengl_colour_parts", "opengl_colours",
+           "classic_colours"]
 
 
 def _vec3(values) -> np.ndarray:
@@ -112,24 +113,37 @@ def _to_light(light: EyeLight, P: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return L, att
 
 
-def opengl_colours(P, N, ambient, diffuse, specular, shininess, lights, global_ambient=(0.2, 0.2, 0.2),
-                   local_viewer=False) -> np.ndarray:
-    """OpenGL 1.x fixed-function colour (M,3) at view-space points P with normals N."""
+def opengl_colour_parts(P, N, ambient, diffuse, specular, shininess, lights, global_ambient=(0.2, 0.2, 0.2),
+                        local_viewer=False) -> tuple[np.ndarray, np.ndarray]:
+    """OpenGL 1.x fixed-function lighting at view-space points P with normals N, in its two
+    parts: the primary colour (ambient + diffuse, global ambient included) and the
+    secondary (specular) colour, each (M,3) and *not* clamped."""
     P, N = _points_and_normals(P, N)
     Ma, Md, Ms = _vec3(ambient), _vec3(diffuse), _vec3(specular)
     V = unit(-P) if local_viewer else np.broadcast_to([0.0, 0.0, 1.0], P.shape)
-    c = np.broadcast_to(_vec3(global_ambient) * Ma, P.shape).copy()
+    primary = np.broadcast_to(_vec3(global_ambient) * Ma, P.shape).copy()
+    secondary = np.zeros(P.shape)
     for light in lights:
         L, att = _to_light(light, P)
         NL = np.sum(N * L, axis=1)
         H = unit(L + V)
         NH = np.maximum(np.sum(N * H, axis=1), 0.0)
         s = np.where(NL > 0, NH ** float(shininess), 0.0)
-        term = (_vec3(light.ambient) * Ma
-                + np.maximum(NL, 0.0)[:, None] * (_vec3(light.diffuse) * Md)
-                + s[:, None] * (_vec3(light.specular) * Ms))
-        c += att[:, None] * term
-    return np.clip(c, 0.0, 1.0)
+        primary += att[:, None] * (_vec3(light.ambient) * Ma + np.maximum(NL, 0.0)[:, None] * (_vec3(light.diffuse) * Md))
+        secondary += att[:, None] * s[:, None] * (_vec3(light.specular) * Ms)
+    return primary, secondary
+
+
+def opengl_colours(P, N, ambient, diffuse, specular, shininess, lights, global_ambient=(0.2, 0.2, 0.2),
+                   local_viewer=False, separate_specular=False):
+    """OpenGL 1.x fixed-function colour (M,3) at view-space points P with normals N, clamped
+    to 0..1 (``GL_SINGLE_COLOR``). With ``separate_specular`` (``GL_SEPARATE_SPECULAR_COLOR``)
+    the pair (primary, secondary), each clamped on its own, as the specification has it."""
+    primary, secondary = opengl_colour_parts(P, N, ambient, diffuse, specular, shininess, lights, global_ambient,
+                                             local_viewer)
+    if separate_specular:
+        return np.clip(primary, 0.0, 1.0), np.clip(secondary, 0.0, 1.0)
+    return np.clip(primary + secondary, 0.0, 1.0)
 
 
 def classic_colours(P, N, colour, ka, kd, ks, n, lights, ambient_light=(1.0, 1.0, 1.0)) -> np.ndarray:

@@ -78,8 +78,9 @@ def with_gl_colours(lights: list[EyeLight], scene) -> list[EyeLight]:
     return lights
 
 
-def lit_colours(obj, actor, renderer, scene, lights) -> tuple[np.ndarray, str]:
-    """Lit 0..1 RGB for ``obj``: per point (gouraud with normals) or per cell; and which."""
+def lit_colours(obj, actor, renderer, scene, lights) -> tuple[np.ndarray, str, np.ndarray | None]:
+    """Lit 0..1 RGB for ``obj``: per point (gouraud with normals) or per cell; which; and
+    the separate specular colour (None unless the opengl model with ``separate_specular``)."""
     model_view = _matrix(renderer.GetActiveCamera().GetViewTransformMatrix()) @ _matrix(actor.GetMatrix())
     points = (np.c_[obj.mesh.points, np.ones(obj.mesh.n_points)] @ model_view.T)[:, :3]
     per_point = obj.shading == "gouraud" and obj.mesh.point_normals is not None
@@ -91,18 +92,23 @@ def lit_colours(obj, actor, renderer, scene, lights) -> tuple[np.ndarray, str]:
         points, normals = face_points_and_normals(points, obj.mesh.triangles)
         where = "cells"
     m, r = obj.material, scene.render
+    secondary = None
     if m.model == "opengl":
         rgb = opengl_colours(points, normals, m.gl_ambient, m.gl_diffuse, m.gl_specular, m.shininess, lights,
-                             global_ambient=np.asarray(r.global_ambient), local_viewer=r.local_viewer)
+                             global_ambient=np.asarray(r.global_ambient), local_viewer=r.local_viewer,
+                             separate_specular=r.separate_specular)
+        if r.separate_specular:
+            rgb, secondary = rgb
     else:
         rgb = classic_colours(points, normals, np.asarray(m.color), m.ambient, m.diffuse, m.specular,
                               m.specular_power, lights, ambient_light=np.asarray(r.ambient))
-    return rgb, where
+    return rgb, where, secondary
 
 
 def unshare_points(poly):
     """A copy of triangle-only ``poly`` in which every triangle has its own three points
-    (same coordinates, same order), so a per-triangle value can be a point value."""
+    (same coordinates, same order, texture coordinates kept), so a per-triangle value can
+    be a point value."""
     import vtk
     from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
@@ -116,10 +122,15 @@ def unshare_points(poly):
     cells.SetData(3, numpy_to_vtk(np.arange(triangles.size, dtype=np.int64), deep=True,
                                   array_type=vtk.VTK_ID_TYPE))
     out.SetPolys(cells)
+    tcoords = poly.GetPointData().GetTCoords()
+    if tcoords is not None:
+        unshared = numpy_to_vtk(np.ascontiguousarray(vtk_to_numpy(tcoords)[triangles.reshape(-1)]), deep=True)
+        unshared.SetName(tcoords.GetName() or "TCoords")
+        out.GetPointData().SetTCoords(unshared)
     return out
 
 
-def paint_unlit(actor, rgb: np.ndarray, where: str) -> None:
+def paint_unlit(actor, rgb: np.ndarray, where: str, secondary: np.ndarray | None = None) -> None:
     """Have VTK draw ``rgb`` (0..1) unlit: one colour per cell, or interpolated from points.
 
     Cell colours go in as VTK's ordinary 8-bit cell RGB (a flat colour is stored once,
@@ -127,18 +138,23 @@ def paint_unlit(actor, rgb: np.ndarray, where: str) -> None:
     attribute read by a two-line shader replacement: VTK's own 8-bit point colours would
     be rounded *before* interpolation, a half-step error the fixed-function pipeline
     does not have. Either way VTK rasterises and interpolates (perspective-correctly).
-    A translucent object's cell colours go in as float point colours of unshared
-    vertices (:func:`unshare_points`): blending would show their 8-bit rounding.
+    A translucent or textured object's cell colours go in as float point colours of
+    unshared vertices (:func:`unshare_points`): blending or the texture's modulation would
+    show their 8-bit rounding. ``secondary`` (OpenGL's separate specular colour, per
+    point or cell like ``rgb``) goes in the same way and is added after VTK's texture
+    modulation (``//VTK::TCoord::Impl``), clamped as OpenGL's colour sum is.
     """
     import vtk
     from vtkmodules.util.numpy_support import numpy_to_vtk
 
     mapper = actor.GetMapper()
     poly = mapper.GetInput()
-    if where == "cells" and actor.GetProperty().GetOpacity() < 1.0:
+    if where == "cells" and (actor.GetProperty().GetOpacity() < 1.0 or actor.GetTexture() is not None
+                             or secondary is not None):
         poly = unshare_points(poly)
         mapper.SetInputData(poly)
         rgb, where = np.repeat(rgb, 3, axis=0), "points"
+        secondary = None if secondary is None else np.repeat(secondary, 3, axis=0)
     if where == "cells":
         colours = numpy_to_vtk(np.rint(np.clip(rgb, 0.0, 1.0) * 255.0).astype(np.uint8), deep=True,
                                array_type=vtk.VTK_UNSIGNED_CHAR)
@@ -153,20 +169,45 @@ def paint_unlit(actor, rgb: np.ndarray, where: str) -> None:
         prop.SetDiffuse(1.0)
         prop.SetSpecular(0.0)
         return
-    colours = numpy_to_vtk(np.ascontiguousarray(rgb, dtype=np.float32), deep=True, array_type=vtk.VTK_FLOAT)
-    colours.SetName("litColour")
-    poly.GetPointData().AddArray(colours)
-    mapper.MapDataArrayToVertexAttribute("litColour", "litColour", vtk.vtkDataObject.FIELD_ASSOCIATION_POINTS, -1)
-    sp = actor.GetShaderProperty()
-    sp.AddVertexShaderReplacement("//VTK::Color::Dec", True, "//VTK::Color::Dec\nin vec3 litColour;\n"
-                                  "out vec3 litColourVSOut;\n", False)
-    sp.AddVertexShaderReplacement("//VTK::Color::Impl", True, "//VTK::Color::Impl\nlitColourVSOut = litColour;\n",
-                                  False)
-    sp.AddFragmentShaderReplacement("//VTK::Color::Dec", True, "//VTK::Color::Dec\nin vec3 litColourVSOut;\n",
-                                    False)
+    attributes = {"litColour": rgb} if secondary is None else {"litColour": rgb, "litSecondary": secondary}
+    add_point_attributes(actor, attributes)
     opacity = actor.GetProperty().GetOpacity()
-    sp.AddFragmentShaderReplacement("//VTK::Light::Impl", True, f"fragOutput0 = vec4(litColourVSOut, {opacity:.9g});\n",
-                                    False)
+    actor.GetShaderProperty().AddFragmentShaderReplacement(
+        "//VTK::Light::Impl", True, f"fragOutput0 = vec4(litColourVSOut, {opacity:.9g});\n", False)
+    if secondary is not None:
+        add_secondary_colour(actor, "litSecondaryVSOut")
+
+
+def add_point_attributes(actor, attributes: dict[str, np.ndarray]) -> None:
+    """Pass each float (N, 3) array per point to the fragment shader as ``<name>VSOut``
+    (vertex attributes, interpolated perspective-correctly by VTK's rasteriser). One
+    replacement per shader tag: VTK keeps one per tag, a second would replace the first."""
+    import vtk
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+
+    mapper = actor.GetMapper()
+    for name, values in attributes.items():
+        array = numpy_to_vtk(np.ascontiguousarray(values, dtype=np.float32), deep=True, array_type=vtk.VTK_FLOAT)
+        array.SetName(name)
+        mapper.GetInput().GetPointData().AddArray(array)
+        mapper.MapDataArrayToVertexAttribute(name, name, vtk.vtkDataObject.FIELD_ASSOCIATION_POINTS, -1)
+    vs_dec = "".join(f"in vec3 {name};\nout vec3 {name}VSOut;\n" for name in attributes)
+    vs_impl = "".join(f"{name}VSOut = {name};\n" for name in attributes)
+    fs_dec = "".join(f"in vec3 {name}VSOut;\n" for name in attributes)
+    sp = actor.GetShaderProperty()
+    sp.AddVertexShaderReplacement("//VTK::Color::Dec", True, "//VTK::Color::Dec\n" + vs_dec, False)
+    sp.AddVertexShaderReplacement("//VTK::Color::Impl", True, "//VTK::Color::Impl\n" + vs_impl, False)
+    sp.AddFragmentShaderReplacement("//VTK::Color::Dec", True, "//VTK::Color::Dec\n" + fs_dec, False)
+
+
+def add_secondary_colour(actor, glsl_value: str) -> None:
+    """Add ``glsl_value`` (a vec3 expression, clamped to 0..1) to the fragment's colour
+    *after* VTK's texture modulation, and clamp the sum: OpenGL's colour sum with
+    ``GL_SEPARATE_SPECULAR_COLOR``."""
+    actor.GetShaderProperty().AddFragmentShaderReplacement(
+        "//VTK::TCoord::Impl", True,
+        f"//VTK::TCoord::Impl\n  fragOutput0.rgb = min(fragOutput0.rgb + clamp({glsl_value}, 0.0, 1.0), 1.0);\n",
+        False)
 
 
 # ------------------------------------------------------------- phong: a replaced shader
@@ -193,13 +234,16 @@ def phong_shader(obj, scene, lights: list[EyeLight]) -> str:
     Uses VTK's interpolated view-space normal and position (``normalVCVSOutput``,
     ``vertexVC``); VTK has already negated the normal on back faces for its two-sided
     lighting, which is undone here (the textbook models take normals as given). The
-    lights and the material are written into the code as constants.
+    lights and the material are written into the code as constants. The opengl model
+    sums its specular term into ``secondary``, which joins ``c`` here (GL_SINGLE_COLOR)
+    or, with separate specular, after the texture (:func:`add_secondary_colour`).
     """
     m, r = obj.material, scene.render
     head = ("  vec3 n = normalize(normalVCVSOutput);\n"
             "  if (!gl_FrontFacing) { n = -n; }\n"
             "  vec3 P = vertexVC.xyz;\n"
-            "  vec3 L; float att; float dist; float cs; float ndl;\n")
+            "  vec3 L; float att; float dist; float cs; float ndl;\n"
+            "  vec3 secondary = vec3(0.0);\n")
     if m.model == "opengl":
         ma, md, ms = _vec3(m.gl_ambient), _vec3(m.gl_diffuse), _vec3(m.gl_specular)
         viewer = "normalize(-P)" if r.local_viewer else "vec3(0.0, 0.0, 1.0)"
@@ -208,8 +252,10 @@ def phong_shader(obj, scene, lights: list[EyeLight]) -> str:
             body += ("  {\n" + _glsl_light_vector(i, li) +
                      "    ndl = dot(n, L);\n    float sf = 0.0;\n"
                      f"    if (ndl > 0.0) {{ sf = pow(max(dot(n, normalize(L + V)), 0.0), {m.shininess:.9g}); }}\n"
-                     f"    c += att * ({_vec3(li.ambient)} * {ma} + max(ndl, 0.0) * {_vec3(li.diffuse)} * {md}"
-                     f" + sf * {_vec3(li.specular)} * {ms});\n  }}\n")
+                     f"    c += att * ({_vec3(li.ambient)} * {ma} + max(ndl, 0.0) * {_vec3(li.diffuse)} * {md});\n"
+                     f"    secondary += att * sf * {_vec3(li.specular)} * {ms};\n  }}\n")
+        if not r.separate_specular:
+            body += "  c += secondary;\n"
     else:
         o = np.asarray(m.color)
         body = f"  vec3 V = normalize(-P);\n  vec3 c = {_vec3(m.ambient * o)} * {_vec3(r.ambient)};\n"
@@ -224,7 +270,10 @@ def phong_shader(obj, scene, lights: list[EyeLight]) -> str:
     return head + body + f"  fragOutput0 = vec4(clamp(c, 0.0, 1.0), {m.opacity:.9g});\n"
 
 
-def replace_light_shader(actor, code: str) -> None:
-    """Swap VTK's fragment lighting for ``code`` (vtkShaderProperty replacement)."""
+def replace_light_shader(actor, code: str, separate_specular: bool = False) -> None:
+    """Swap VTK's fragment lighting for ``code`` (vtkShaderProperty replacement); with
+    ``separate_specular``, its ``secondary`` colour is added after the texture."""
     actor.GetShaderProperty().AddFragmentShaderReplacement("//VTK::Light::Impl", True, code, False)
     actor.GetProperty().SetInterpolationToPhong()
+    if separate_specular:
+        add_secondary_colour(actor, "secondary")

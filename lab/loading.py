@@ -249,13 +249,15 @@ def _normals(s: _Section, mesh: Mesh, table: dict) -> Mesh:
 
 def _render(src, table) -> RenderSettings:
     s = _Section(src, "render", table, {"interpolation", "global_ambient", "local_viewer", "ambient",
-                                        "hidden_surface", "cull_backfaces", "transparency"})
+                                        "hidden_surface", "cull_backfaces", "transparency",
+                                        "separate_specular"})
     return RenderSettings(interpolation=s.choice("interpolation", "perspective", INTERPOLATIONS),
                           hidden_surface=s.choice("hidden_surface", "zbuffer", HIDDEN_SURFACES),
                           cull_backfaces=s.flag("cull_backfaces", False),
                           transparency=s.choice("transparency", "oit", TRANSPARENCIES),
                           global_ambient=s.colour("global_ambient", (0.2, 0.2, 0.2)),
-                          local_viewer=s.flag("local_viewer", False), ambient=s.colour("ambient", (1.0, 1.0, 1.0)))
+                          local_viewer=s.flag("local_viewer", False), ambient=s.colour("ambient", (1.0, 1.0, 1.0)),
+                          separate_specular=s.flag("separate_specular", False))
 
 
 PYVISTA_EXAMPLES = "pyvista-examples:"

@@ -160,6 +160,9 @@ class RenderSettings:
     hidden_surface : "zbuffer" (LEQUAL depth test), "painter" (back to front by centroid
         depth, no depth test) or "none" (draw order, no depth test).
     cull_backfaces : drop triangles that are clockwise on screen (VTK culls none by default).
+    separate_specular : OpenGL's ``GL_SEPARATE_SPECULAR_COLOR`` for opengl-model objects: the
+        specular colour is kept apart and added after the texture modulates the rest
+        (default: one colour, ``GL_SINGLE_COLOR``).
     transparency : how objects with opacity < 1 are composited (:mod:`renderer.translucency`):
         "oit" (VTK's default weighted-average order-independent blend), "depth_peeling"
         (exact, front to back) or "sorted" (back to front, "over" per fragment).
@@ -172,6 +175,7 @@ class RenderSettings:
     hidden_surface: str = "zbuffer"
     cull_backfaces: bool = False
     transparency: str = "oit"
+    separate_specular: bool = False
 
 
 @dataclass(frozen=True, eq=False)

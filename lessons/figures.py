@@ -5,6 +5,9 @@
   interpolation (what GPUs and VTK do), with the ΔE2000 map between them.
 - ``gouraud-vs-vtk.png``: the textbook's OpenGL Gouraud sphere beside VTK's per-pixel
   "Gouraud" with the nearest equivalent material: the difference sits on the highlights.
+- ``separate-specular.png``: a shiny textured sphere in OpenGL's single-colour mode (the
+  texture tints the highlight) beside ``GL_SEPARATE_SPECULAR_COLOR`` (the highlight keeps
+  the light's colour), with the ΔE2000 map between them: it is the highlight.
 """
 from __future__ import annotations
 
@@ -60,7 +63,22 @@ def gouraud_vs_vtk_figure(out: Path) -> dict:
     return m
 
 
+def separate_specular_figure(out: Path) -> dict:
+    """Write ``separate-specular.png`` (single colour vs separate specular, both ours; each
+    is checked against its VTK reference in the tests)."""
+    scene = load_scene("separate-specular")
+    single = render(dataclasses.replace(scene, render=dataclasses.replace(scene.render, separate_specular=False)))
+    separate = render(dataclasses.replace(scene, render=dataclasses.replace(scene.render, separate_specular=True)))
+    metrics, de = compare_frames(single, separate)
+    shared, mismatch = coverage_masks(single, separate)
+    side_by_side_figure(single.rgb, separate.rgb, de, mismatch, metrics, out / "separate-specular.png",
+                        title="A textured shiny sphere: where does the highlight go?", shared=shared,
+                        labels=("GL_SINGLE_COLOR (texture × everything)", "GL_SEPARATE_SPECULAR_COLOR"))
+    return metrics
+
+
 def build_figures(out: Path) -> dict:
     """Make every lesson figure into ``out``; returns their metrics by figure name."""
     out.mkdir(parents=True, exist_ok=True)
-    return {"interpolation": interpolation_figure(out), "gouraud-vs-vtk": gouraud_vs_vtk_figure(out)}
+    return {"interpolation": interpolation_figure(out), "gouraud-vs-vtk": gouraud_vs_vtk_figure(out),
+            "separate-specular": separate_specular_figure(out)}

@@ -129,7 +129,7 @@ def object_table(scene, complexity: int) -> ObjectTable:
     return ObjectTable(np.array(kind, np.int64), np.array(model, np.int64), np.array(comp, np.int64),
                        np.array(amb, np.float64), np.array(dif, np.float64), np.array(spe, np.float64),
                        np.array(power, np.float64), np.asarray(r.global_ambient, np.float64),
-                       np.asarray(r.ambient, np.float64), bool(r.local_viewer), *tex)
+                       np.asarray(r.ambient, np.float64), bool(r.local_viewer), bool(r.separate_specular), *tex)
 
 
 def texture_table(scene):
@@ -154,15 +154,18 @@ def texture_table(scene):
 
 
 def textbook_colours(geo: SceneGeometry, objs: ObjectTable, lights, ws=None):
-    """Lit colours per vertex (Gouraud) and per triangle (flat) for the textbook models."""
-    vert_colour = empty(ws, "shade.vert_colour", (len(geo.verts_view), 3))
-    face_colour = empty(ws, "shade.face_colour", (len(geo.triangles), 3))
+    """Lit colours per vertex (Gouraud) and per triangle (flat) for the textbook models:
+    (N, 6) and (T, 6), primary RGB then secondary (separate specular) RGB."""
+    vert_colour = empty(ws, "shade.vert_colour", (len(geo.verts_view), 6))
+    face_colour = empty(ws, "shade.face_colour", (len(geo.triangles), 6))
     if (objs.kind == VERTEX_COLOUR).any():
         light_vertices(geo.verts_view, geo.normals_view, geo.vert_object, objs.model, objs.amb, objs.dif, objs.spe,
-                       objs.power, objs.global_ambient, objs.local_viewer, objs.ambient_light, lights, vert_colour)
+                       objs.power, objs.global_ambient, objs.local_viewer, objs.separate_specular,
+                       objs.ambient_light, lights, vert_colour)
     if (objs.kind == FACE_COLOUR).any():
         light_faces(geo.verts_view, geo.triangles, geo.tri_object, objs.model, objs.amb, objs.dif, objs.spe,
-                    objs.power, objs.global_ambient, objs.local_viewer, objs.ambient_light, lights, face_colour)
+                    objs.power, objs.global_ambient, objs.local_viewer, objs.separate_specular,
+                    objs.ambient_light, lights, face_colour)
     return vert_colour, face_colour
 
 

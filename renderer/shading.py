@@ -113,7 +113,8 @@ class ObjectTable(NamedTuple):
     kind : VTK_FLAT … TEXTBOOK_PIXEL. model : 0 vtk, 1 opengl, 2 classic.
     complexity : VTK light complexity (0 when the object's lighting is off).
     amb, dif, spe (O, 3), power (O,): see :func:`renderer.pipeline.object_table`.
-    global_ambient, ambient_light (3,), local_viewer: from the scene's ``[render]``.
+    global_ambient, ambient_light (3,), local_viewer, separate_specular: from the scene's
+    ``[render]``.
     textured, tex_offset, tex_width, tex_height, tex_filter, tex_wrap (O,) and texels
     (Σ H·W, 3): the objects' textures (see :func:`renderer.pipeline.texture_table`).
     """
@@ -128,6 +129,7 @@ class ObjectTable(NamedTuple):
     global_ambient: np.ndarray
     ambient_light: np.ndarray
     local_viewer: bool
+    separate_specular: bool
     textured: np.ndarray
     tex_offset: np.ndarray
     tex_width: np.ndarray
@@ -138,10 +140,10 @@ class ObjectTable(NamedTuple):
 
 
 @njit(cache=True, inline="always")
-def interpolate(w, a, i0, i1, i2, out):
-    """out = w0·a[i0] + w1·a[i1] + w2·a[i2] for (N, 3) rows."""
+def interpolate(w, a, i0, i1, i2, out, first=0):
+    """out = w0·a[i0] + w1·a[i1] + w2·a[i2] over columns ``first .. first + 2`` of ``a``."""
     for c in range(3):
-        out[c] = w[0] * a[i0, c] + w[1] * a[i1, c] + w[2] * a[i2, c]
+        out[c] = w[0] * a[i0, first + c] + w[1] * a[i1, first + c] + w[2] * a[i2, first + c]
 
 
 @njit(cache=True, inline="always")
@@ -154,9 +156,9 @@ def normalise(n):
 
 @njit(cache=True, inline="always")
 def fragment_colour(frags, k, l1, l2, geo, objs, lights, vert_colour, face_colour, parallel_camera, perspective,
-                    w, n, p, tex, out):
+                    w, n, p, tex, spec, out):
     """The linear colour of one fragment of clipped triangle ``k`` with screen-space weights
-    ``l1, l2`` (of its vertices 1 and 2) into ``out``; ``w, n, p, tex`` are (3,) scratch.
+    ``l1, l2`` (of its vertices 1 and 2) into ``out``; ``w, n, p, tex, spec`` are (3,) scratch.
 
     Per object kind: VTK's per-fragment lighting with the plane normal (VTK_FLAT) or the
     interpolated normal (VTK_SMOOTH); a lit colour per triangle (FACE_COLOUR) or
@@ -170,11 +172,15 @@ def fragment_colour(frags, k, l1, l2, geo, objs, lights, vert_colour, face_colou
     o = geo.tri_object[s]
     i0, i1, i2 = tris[s, 0], tris[s, 1], tris[s, 2]
     kind = objs.kind[o]
+    for c in range(3):
+        spec[c] = 0.0
     if kind == FACE_COLOUR:
         for c in range(3):
             out[c] = face_colour[s, c]
+            spec[c] = face_colour[s, 3 + c]
     elif kind == VERTEX_COLOUR:
         interpolate(w, vert_colour, i0, i1, i2, out)
+        interpolate(w, vert_colour, i0, i1, i2, spec, 3)
     else:
         interpolate(w, verts, i0, i1, i2, p)
         if kind == VTK_FLAT:
@@ -190,17 +196,20 @@ def fragment_colour(frags, k, l1, l2, geo, objs, lights, vert_colour, face_colou
                     n[c] = -n[c]
         if kind == TEXTBOOK_PIXEL:
             textbook_lighting(objs.model[o], n, p, objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
-                              objs.global_ambient, objs.local_viewer, objs.ambient_light, lights, out)
+                              objs.global_ambient, objs.local_viewer, objs.separate_specular, objs.ambient_light,
+                              lights, out, spec)
         else:
             vtk_lighting(n, p, objs.complexity[o], objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
                          lights, out)
-    if objs.textured[o]:  # the texture multiplies the whole lit colour (VTK, GL_MODULATE)
+    if objs.textured[o]:  # the texture multiplies the lit colour (VTK, GL_MODULATE) ...
         ts = w[0] * geo.tcoords[i0, 0] + w[1] * geo.tcoords[i1, 0] + w[2] * geo.tcoords[i2, 0]
         tt = w[0] * geo.tcoords[i0, 1] + w[1] * geo.tcoords[i1, 1] + w[2] * geo.tcoords[i2, 1]
         sample(objs.texels, objs.tex_offset[o], objs.tex_width[o], objs.tex_height[o], objs.tex_filter[o],
                objs.tex_wrap[o], ts, tt, tex)
         for c in range(3):
             out[c] *= tex[c]
+    for c in range(3):  # ... and the separate specular colour (zero unless asked for) comes after it
+        out[c] += spec[c]
 
 
 @njit(cache=True, parallel=True)
@@ -218,6 +227,7 @@ def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, p
         p = np.empty(3)
         out = np.empty(3)
         tex = np.empty(3)
+        spec = np.empty(3)
         for col in range(width):
             k = frags.tri_index[row, col]
             if k < 0:
@@ -225,6 +235,6 @@ def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, p
                     rgb[row, col, c] = background[c]
                 continue
             fragment_colour(frags, k, frags.bary[row, col, 0], frags.bary[row, col, 1], geo, objs, lights,
-                            vert_colour, face_colour, parallel_camera, perspective, w, n, p, tex, out)
+                            vert_colour, face_colour, parallel_camera, perspective, w, n, p, tex, spec, out)
             for c in range(3):
                 rgb[row, col, c] = unorm8(out[c])

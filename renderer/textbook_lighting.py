@@ -13,11 +13,16 @@ spot cone, weighted by ``(−L·direction)^exponent`` (zero outside). Results ar
   chapter 17): ``c = Ga·Ma + Σ att·spot·(La·Ma + max(n·L, 0)·Ld·Md
   + [n·L > 0]·max(n·H, 0)^shininess·Ls·Ms)`` with Blinn's half vector
   ``H = normalize(L + V)``, ``V = (0, 0, 1)`` (infinite viewer, OpenGL's default) or
-  ``normalize(−p)`` (local viewer). No emission.
+  ``normalize(−p)`` (local viewer). No emission. With ``GL_SEPARATE_SPECULAR_COLOR``
+  (``separate``) the specular sum is a second colour of its own (each clamped), which a
+  texture does not modulate: it is added after texturing.
 - **classic** (:func:`classic_lighting`; the course's slides):
   ``I = Ka·O·A + Σ att·spot·[L·N > 0]·(Kd·O·I·(L·N) + Ks·I·max(R·V, 0)^n)``, with
   ``R = 2(L·N)N − L`` and ``V = normalize(−p)``; specular only where the light reaches
   the front of the surface.
+
+Every kernel writes a *primary* colour ``out`` and a *secondary* (specular) colour
+``spec``; ``spec`` is zero except for the opengl model with separate specular.
 
 Material arrays follow :func:`renderer.pipeline.material_arrays`: for opengl
 ``amb, dif, spe, power`` = Ma, Md, Ms, shininess; for classic ``Ka·O``, ``Kd·O``,
@@ -47,8 +52,9 @@ def light_vector(lights, i, p):
 
 
 @njit(cache=True, inline="always")
-def opengl_lighting(n, p, amb, dif, spe, shininess, global_ambient, local_viewer, lights, out):
-    """Fixed-function OpenGL's lit colour at one point (the scalar kernel), clamped to 0..1."""
+def opengl_lighting(n, p, amb, dif, spe, shininess, global_ambient, local_viewer, separate, lights, out, spec):
+    """Fixed-function OpenGL's lit colour at one point (the scalar kernel), clamped to 0..1:
+    all of it in ``out`` (GL_SINGLE_COLOR), or the specular part in ``spec`` if ``separate``."""
     if local_viewer:
         plen = math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
         vx, vy, vz = -p[0] / plen, -p[1] / plen, -p[2] / plen
@@ -56,6 +62,7 @@ def opengl_lighting(n, p, amb, dif, spe, shininess, global_ambient, local_viewer
         vx, vy, vz = 0.0, 0.0, 1.0
     for c in range(3):
         out[c] = global_ambient[c] * amb[c]
+        spec[c] = 0.0
     for i in range(lights.direction.shape[0]):
         lx, ly, lz, att = light_vector(lights, i, p)
         if att == 0.0:
@@ -69,19 +76,25 @@ def opengl_lighting(n, p, amb, dif, spe, shininess, global_ambient, local_viewer
             sf = max(ndh, 0.0) ** shininess
         df = max(ndl, 0.0)
         for c in range(3):
-            out[c] += att * (lights.gl_ambient[i, c] * amb[c] + df * lights.gl_diffuse[i, c] * dif[c]
-                             + sf * lights.gl_specular[i, c] * spe[c])
+            out[c] += att * (lights.gl_ambient[i, c] * amb[c] + df * lights.gl_diffuse[i, c] * dif[c])
+            if separate:
+                spec[c] += att * sf * lights.gl_specular[i, c] * spe[c]
+            else:
+                out[c] += att * sf * lights.gl_specular[i, c] * spe[c]
     for c in range(3):
         out[c] = min(max(out[c], 0.0), 1.0)
+        spec[c] = min(max(spec[c], 0.0), 1.0)
 
 
 @njit(cache=True, inline="always")
-def classic_lighting(n, p, amb, dif, spe, power, ambient_light, lights, out):
-    """The course's ``Ka·O·A + Σ (Kd·O·I·(L·N) + Ks·I·(R·V)^n)`` at one point, clamped to 0..1."""
+def classic_lighting(n, p, amb, dif, spe, power, ambient_light, lights, out, spec):
+    """The course's ``Ka·O·A + Σ (Kd·O·I·(L·N) + Ks·I·(R·V)^n)`` at one point, clamped to
+    0..1, in ``out`` (``spec`` is zeroed: the course has one colour)."""
     plen = math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
     vx, vy, vz = -p[0] / plen, -p[1] / plen, -p[2] / plen
     for c in range(3):
         out[c] = amb[c] * ambient_light[c]
+        spec[c] = 0.0
     for i in range(lights.direction.shape[0]):
         lx, ly, lz, att = light_vector(lights, i, p)
         ndl = n[0] * lx + n[1] * ly + n[2] * lz
@@ -99,20 +112,21 @@ OPENGL, CLASSIC = 1, 2  # model codes (0 = vtk, in renderer.lighting)
 
 
 @njit(cache=True, inline="always")
-def textbook_lighting(model, n, p, amb, dif, spe, power, global_ambient, local_viewer, ambient_light, lights, out):
+def textbook_lighting(model, n, p, amb, dif, spe, power, global_ambient, local_viewer, separate, ambient_light, lights,
+                      out, spec):
     """Dispatch to :func:`opengl_lighting` or :func:`classic_lighting` by model code."""
     if model == OPENGL:
-        opengl_lighting(n, p, amb, dif, spe, power, global_ambient, local_viewer, lights, out)
+        opengl_lighting(n, p, amb, dif, spe, power, global_ambient, local_viewer, separate, lights, out, spec)
     else:
-        classic_lighting(n, p, amb, dif, spe, power, ambient_light, lights, out)
+        classic_lighting(n, p, amb, dif, spe, power, ambient_light, lights, out, spec)
 
 
 @njit(cache=True, parallel=True)
 def light_vertices(verts_view, normals_view, vert_object, obj_model, obj_amb, obj_dif, obj_spe, obj_power,
-                   global_ambient, local_viewer, ambient_light, lights, colours):
+                   global_ambient, local_viewer, separate, ambient_light, lights, colours):
     """Gouraud's first half: a lit colour per vertex (the loop kernel), normals normalised.
 
-    Only vertices of objects whose model is opengl or classic are lit; others keep
+    ``colours`` (N, 6): primary RGB, then secondary (specular) RGB. Only vertices of objects whose model is opengl or classic are lit; others keep
     whatever ``colours`` held.
     """
     for v in prange(verts_view.shape[0]):
@@ -124,14 +138,16 @@ def light_vertices(verts_view, normals_view, vert_object, obj_model, obj_amb, ob
         if length > 0.0:
             n /= length
         textbook_lighting(obj_model[o], n, verts_view[v], obj_amb[o], obj_dif[o], obj_spe[o], obj_power[o],
-                          global_ambient, local_viewer, ambient_light, lights, colours[v])
+                          global_ambient, local_viewer, separate, ambient_light, lights, colours[v, :3],
+                          colours[v, 3:])
 
 
 @njit(cache=True, parallel=True)
 def light_faces(verts_view, triangles, tri_object, obj_model, obj_amb, obj_dif, obj_spe, obj_power,
-                global_ambient, local_viewer, ambient_light, lights, colours):
+                global_ambient, local_viewer, separate, ambient_light, lights, colours):
     """Flat shading's colour per triangle (the loop kernel): its plane normal
-    (v1 − v0) × (v2 − v0), lit at one representative point, the centroid."""
+    (v1 − v0) × (v2 − v0), lit at one representative point, the centroid. ``colours``
+    (T, 6): primary RGB, then secondary RGB."""
     for t in prange(triangles.shape[0]):
         o = tri_object[t]
         if obj_model[o] == 0:
@@ -146,4 +162,5 @@ def light_faces(verts_view, triangles, tri_object, obj_model, obj_amb, obj_dif, 
             n /= length
         centroid = (a + b + c) / 3.0
         textbook_lighting(obj_model[o], n, centroid, obj_amb[o], obj_dif[o], obj_spe[o], obj_power[o],
-                          global_ambient, local_viewer, ambient_light, lights, colours[t])
+                          global_ambient, local_viewer, separate, ambient_light, lights, colours[t, :3],
+                          colours[t, 3:])

@@ -238,6 +238,7 @@ def shade_translucent(frags, start, count, frag_tri, frag_bary, frag_z, max_coun
         n = np.empty(3)
         p = np.empty(3)
         tex = np.empty(3)
+        spec = np.empty(3)
         lit = np.empty(3)
         behind = np.empty(3, np.int64)
         out = np.empty(3, np.int64)
@@ -256,7 +257,7 @@ def shade_translucent(frags, start, count, frag_tri, frag_bary, frag_z, max_coun
                 i = start[row, col] + j
                 k = frag_tri[i]
                 fragment_colour(frags, k, frag_bary[i, 0], frag_bary[i, 1], geo, objs, lights, vert_colour,
-                                face_colour, parallel_camera, perspective, w, n, p, tex, lit)
+                                face_colour, parallel_camera, perspective, w, n, p, tex, spec, lit)
                 for c in range(3):
                     colours[j, c] = lit[c]
                 alpha[j] = opacity[geo.tri_object[frags.clip_source[k]]]

@@ -34,3 +34,13 @@ def test_textbook_gouraud_against_vtk_differs_most_on_the_highlight():
     covered = ref.coverage
     highlight = covered & (lum >= np.percentile(lum[covered], 98))
     assert de[highlight].mean() > 4 * de[covered & ~highlight].mean()
+
+
+def test_separate_specular_figure_is_written(tmp_path):
+    """Single colour against separate specular on the shiny globe: they differ (the
+    highlight; where exactly is tested in tests/compare/test_parity_separate_specular.py)."""
+    from lessons.figures import separate_specular_figure
+
+    m = separate_specular_figure(tmp_path)
+    assert (tmp_path / "separate-specular.png").stat().st_size > 10_000
+    assert m["pixels_over_1"] > 0.1 and m["coverage_mismatch"] == 0.0
