@@ -112,9 +112,14 @@ def write_vtp(mesh: Mesh, path) -> None:
 WRITERS = {".ply": write_ply, ".obj": write_obj, ".stl": write_stl, ".vtp": write_vtp}
 
 
-def write_mesh(mesh: Mesh, path) -> None:
-    """Write ``mesh`` in the format its suffix names (.ply, .obj, .stl, .vtp)."""
+def writer_for(path):
+    """The writer for ``path``'s suffix (any case); MeshFileError if there is none."""
     suffix = Path(path).suffix.lower()
     if suffix not in WRITERS:
         raise MeshFileError(f"{path}: cannot write {suffix!r} files (known: {', '.join(WRITERS)})")
-    WRITERS[suffix](mesh, path)
+    return WRITERS[suffix]
+
+
+def write_mesh(mesh: Mesh, path) -> None:
+    """Write ``mesh`` in the format its suffix names (.ply, .obj, .stl, .vtp)."""
+    writer_for(path)(mesh, path)
