@@ -248,7 +248,7 @@ def run_fuzz(cases: int, seed: int, save: Path | None = None, presets: list[Path
              progress=None) -> Summary:
     """Run ``cases`` mutated preset files through the loader; save failing inputs to ``save``.
 
-    ``progress(i, summary)`` is called every 1000 cases if given.
+    ``progress(i, summary)`` is called after every tenth of the cases (at least 1000) if given.
     """
     presets = sorted(presets or SCENES_DIR.glob("*.toml"))
     corpus = [p.read_bytes() for p in presets]
@@ -274,7 +274,7 @@ def run_fuzz(cases: int, seed: int, save: Path | None = None, presets: list[Path
                 summary.failures.append(failure)
                 if save is not None:
                     save_failure(save, source, failure)
-            if progress and (i + 1) % 1000 == 0:
+            if progress and (i + 1) % max(1000, cases // 10) == 0:
                 progress(i + 1, summary)
     summary.seconds = time.perf_counter() - started
     return summary

@@ -7,8 +7,10 @@ one-line message names the file and the key. Colours are quantised to k/255 on l
 from __future__ import annotations
 
 import difflib
+import errno
 import inspect
 import math
+import os
 import tomllib
 from dataclasses import replace
 from pathlib import Path
@@ -17,7 +19,7 @@ import numpy as np
 
 from lab import shapes
 from lab.mesh import Mesh
-from lab.values import MAX_MAGNITUDE, real, show
+from lab.values import MAX_MAGNITUDE, file_problem, real, show
 from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, Camera, Image, Light, Material,
                        RenderSettings, Scene, SceneObject, headlight)
 from renderer.transform import model_matrix
@@ -398,13 +400,16 @@ def load_scene(path_or_name, allow_large: bool = False) -> Scene:
     path = Path(text)
     if path.suffix.lower() != ".toml":
         preset = SCENES_DIR / f"{text}.toml"
-        if preset.is_file():
+        if file_problem(preset) is None:
             path = preset
         elif text.partition(":")[0] in shapes.SHAPES:
             return shape_scene(text)
-        elif not path.exists():
-            raise SceneError(f"{text}: no such scene file, preset or shape "
+        elif file_problem(path) == os.strerror(errno.ENOENT):
+            raise SceneError(f"{text if len(text) <= 200 else text[:199] + '…'}: no such scene file, preset or shape "
                              f"(shapes: {', '.join(shapes.SHAPES)}; presets: `scanlab scenes`)")
+    problem = file_problem(path)
+    if problem:
+        raise SceneError(f"{path}: cannot read: {problem}")
     try:
         raw = path.read_bytes()
     except OSError as exc:

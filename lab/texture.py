@@ -12,6 +12,8 @@ from pathlib import Path
 
 import numpy as np
 
+from lab.values import file_problem
+
 FILTERS = ("nearest", "linear")
 WRAPS = ("repeat", "clamp")
 
@@ -44,8 +46,9 @@ def load_texture(path, filter: str = "nearest", wrap: str = "repeat") -> Texture
     """
     from PIL import Image, UnidentifiedImageError
 
-    if Path(path).exists() and not Path(path).is_file():
-        raise ValueError(f"{path}: not a regular file")
+    problem = file_problem(path)
+    if problem:
+        raise ValueError(f"{path}: cannot read the texture image ({problem})")
     try:
         with Image.open(path) as im:
             rgb = np.asarray(im.convert("RGB"), dtype=np.float64) / 255.0

@@ -7,6 +7,8 @@ so a message stays one short line whatever the file holds.
 from __future__ import annotations
 
 import math
+import os
+import stat
 
 MAX_MAGNITUDE = 1e15
 """Largest absolute value of any number in a scene file: products of two coordinates,
@@ -44,3 +46,13 @@ def finite(x) -> float | None:
     """``x`` as a float if it is a finite number within ±MAX_MAGNITUDE, else None."""
     v = real(x)
     return v if v is not None and math.isfinite(v) and abs(v) <= MAX_MAGNITUDE else None
+
+
+def file_problem(path) -> str | None:
+    """Why ``path`` cannot be read as a regular file ("No such file or directory", "File
+    name too long", "not a regular file" for a folder, device or pipe ...), or None."""
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError) as exc:  # ValueError: a NUL byte in the name
+        return getattr(exc, "strerror", None) or str(exc)
+    return None if stat.S_ISREG(mode) else "not a regular file"

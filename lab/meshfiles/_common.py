@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from lab.mesh import Mesh, fan_triangulate
-from lab.values import MAX_MAGNITUDE
+from lab.values import MAX_MAGNITUDE, file_problem
 
 
 class MeshFileError(ValueError):
@@ -23,8 +23,9 @@ def reading(path):
 
     Only regular files are read (a folder, a device such as /dev/zero or a pipe is refused).
     """
-    if Path(path).exists() and not Path(path).is_file():
-        raise MeshFileError(f"{path}: not a regular file")
+    problem = file_problem(path)
+    if problem:
+        raise MeshFileError(f"{path}: cannot read file: {problem}")
     try:
         yield Path(path).read_bytes()
     except MeshFileError:
