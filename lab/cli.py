@@ -262,7 +262,7 @@ def cmd_fuzz(args) -> int:
     summary = run_fuzz(args.cases, args.seed, save=save, progress=progress)
     print(summary.line())
     for f in summary.failures[:10]:
-        print(f"  FAIL {save / f'fuzz-{f.seed}-{f.case}-{f.preset}.toml'}: {f.error.splitlines()[0]}")
+        print(f"  FAIL {save / f'fuzz-{f.seed}-{f.case}-{f.preset}.toml'}: {f.error.splitlines()[0][:200]}")
     if summary.failures:
         print(f"failing inputs and their tracebacks are in {save}/")
     return 1 if summary.failures else 0

@@ -48,3 +48,13 @@ def test_check_case_flags_other_exceptions(monkeypatch):
     monkeypatch.setattr(lab.fuzz, "parse_scene", broken)
     outcome, detail = check_case(b"", "x.toml")
     assert outcome == "failure" and "KeyError" in detail
+
+
+def test_the_fuzz_command_prints_a_summary(tmp_path, capsys):
+    """`scanlab fuzz --cases N --seed S` prints one summary line and exits 0 when nothing fails."""
+    from lab.cli import main
+
+    assert main(["fuzz", "--cases", "60", "--seed", "3", "--save", str(tmp_path / "f")]) == 0
+    out = capsys.readouterr().out
+    assert "60 cases in" in out and "0 failures" in out
+    assert not (tmp_path / "f").exists()  # nothing to save
