@@ -5,7 +5,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-$(shell cat pyproject.toml | cksum | cut -d' ' -f1)
 OUT    ?= out/demo
 
-.PHONY: demo test venv bench clean clean-cache
+.PHONY: demo test venv bench fuzz clean clean-cache
 
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -23,6 +23,12 @@ test: $(STAMP)
 
 bench: $(STAMP)
 	$(PY) -m lab bench icosphere:level=5 --size 512x512
+
+# the scene loader against mutated presets; failing inputs go to out/fuzz/ (README, "Bad input")
+CASES ?= 100000
+SEED  ?= 1
+fuzz: $(STAMP)
+	$(PY) -m lab fuzz --cases $(CASES) --seed $(SEED) --save out/fuzz
 
 # numba's on-disk cache is invalidated only when a kernel's *own* file changes: after
 # editing a kernel that others call (say renderer/texture.py), clear it.

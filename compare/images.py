@@ -1,8 +1,8 @@
 """PNG output for comparisons: raw frames, a ΔE heat map, and a side-by-side panel.
 
-Every file is written atomically: into a temporary file in the target's directory, then
-moved over the target with ``os.replace``, so an interrupted write never leaves a
-partial PNG behind (an existing target stays untouched).
+Every file is written atomically (:func:`lab.atomic.atomic_file`): into a temporary file
+in the target's directory, then moved over the target with ``os.replace``, so an
+interrupted write never leaves a partial PNG behind (an existing target stays untouched).
 
 Figures use matplotlib's object-oriented API (``matplotlib.figure.Figure``), which
 renders with the Agg backend without touching pyplot or the process-wide backend, so
@@ -15,15 +15,14 @@ from __future__ import annotations
 
 import math
 import os
-import tempfile
-from contextlib import contextmanager, suppress
-from typing import BinaryIO, Iterator
 
 import numpy as np
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 from PIL import Image
+
+from lab.atomic import atomic_file
 
 DPI = 100
 """Figure resolution, dots per inch: with it, sizes below are PNG pixels."""
@@ -34,25 +33,6 @@ CMAP = "viridis"
 MISMATCH_COLOUR = (1.0, 0.0, 1.0)  # magenta: not in viridis, so it cannot be misread
 BACKGROUND_COLOUR = (0.85, 0.85, 0.85)  # light grey: neither frame has coverage
 MIN_PANEL_PX = 256  # small images are enlarged by an integer factor up to this width
-
-
-@contextmanager
-def _atomic_file(path: str | os.PathLike) -> Iterator[BinaryIO]:
-    """Open a temporary file next to ``path``; on success move it onto ``path``."""
-    path = os.fspath(path)
-    directory, name = os.path.split(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(dir=directory, prefix=f".{name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            yield f
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(tmp, 0o644)  # mkstemp creates 0600
-        os.replace(tmp, path)
-    except BaseException:
-        with suppress(FileNotFoundError):
-            os.unlink(tmp)
-        raise
 
 
 def write_png(path: str | os.PathLike, rgb: np.ndarray) -> None:
@@ -67,12 +47,12 @@ def write_png(path: str | os.PathLike, rgb: np.ndarray) -> None:
     if rgb.dtype != np.uint8 or rgb.ndim != 3 or rgb.shape[2] != 3:
         raise TypeError(f"expected (H, W, 3) uint8, got {rgb.dtype} {rgb.shape}")
     image = Image.fromarray(np.ascontiguousarray(rgb))
-    with _atomic_file(path) as f:
+    with atomic_file(path) as f:
         image.save(f, format="PNG")
 
 
 def _save_figure(fig: Figure, path: str | os.PathLike) -> None:
-    with _atomic_file(path) as f:
+    with atomic_file(path) as f:
         fig.savefig(f, format="png", dpi=DPI)
 
 

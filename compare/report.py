@@ -7,8 +7,6 @@
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 import time
 from pathlib import Path
 
@@ -16,6 +14,10 @@ from compare.images import delta_e_figure, side_by_side_figure, write_png
 from compare.metrics import compare_frames, coverage_masks
 from compare.reference import render_reference
 from compare.textbook_reference import scene_reference
+from lab.atomic import write_text
+
+OUTPUT_FILES = ("ours.png", "vtk.png", "delta_e.png", "side_by_side.png", "metrics.json")
+"""The files :func:`compare_scene` writes into its folder, and the only ones."""
 
 
 def timed_render(scene, warm: bool = True):
@@ -42,17 +44,8 @@ def model_label(scene) -> str:
 
 
 def write_json(path: Path, data: dict) -> None:
-    """Write JSON atomically: a temporary file in the same folder, then a rename."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as f:
-            json.dump(data, f, indent=2)
-            f.write("\n")
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    """Write JSON atomically (:func:`lab.atomic.atomic_file`): a temporary file, then a rename."""
+    write_text(path, json.dumps(data, indent=2) + "\n")
 
 
 def reference_label(scene, reference: str | None = None) -> str:

@@ -61,6 +61,7 @@ from typing import Union
 import numpy as np
 
 from lab.mesh import Mesh
+from lab.values import MAX_MAGNITUDE, real, show
 
 __all__ = [
     "HalfSpace", "Primitive", "Op", "Node",
@@ -564,7 +565,7 @@ def _fail(where: str, msg: str):
 def _check_keys(d: Mapping, allowed: Sequence[str], where: str, what: str):
     for k in d:
         if k not in allowed:
-            _fail(where, f"unknown key {k!r} for {what}; valid: {', '.join(sorted(allowed))}")
+            _fail(where, f"unknown key {show(k)} for {what}; valid: {', '.join(sorted(allowed))}")
 
 
 def _num(d: Mapping, key: str, where: str, default=None, positive=False) -> float:
@@ -572,12 +573,14 @@ def _num(d: Mapping, key: str, where: str, default=None, positive=False) -> floa
         if default is None:
             _fail(where, f"missing key {key!r}")
         return float(default)
-    v = d[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-        _fail(f"{where}.{key}", f"must be a finite number, got {v!r}")
+    v = real(d[key])
+    if v is None or not math.isfinite(v):
+        _fail(f"{where}.{key}", f"must be a finite number, got {show(d[key])}")
+    if abs(v) > MAX_MAGNITUDE:
+        _fail(f"{where}.{key}", f"must lie within ±{MAX_MAGNITUDE:g}, got {v:g}")
     if positive and not v > 0:
-        _fail(f"{where}.{key}", f"must be positive, got {v!r}")
-    return float(v)
+        _fail(f"{where}.{key}", f"must be positive, got {v:g}")
+    return v
 
 
 def _vec(d: Mapping, key: str, where: str, default=None) -> tuple[float, float, float]:
@@ -586,11 +589,12 @@ def _vec(d: Mapping, key: str, where: str, default=None) -> tuple[float, float, 
             _fail(where, f"missing key {key!r}")
         return default
     v = d[key]
-    ok = (isinstance(v, (list, tuple)) and len(v) == 3
-          and all(isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) for x in v))
-    if not ok:
-        _fail(f"{where}.{key}", f"must be a list of 3 finite numbers, got {v!r}")
-    return tuple(float(x) for x in v)
+    xs = [real(x) for x in v] if isinstance(v, (list, tuple)) and len(v) == 3 else [None]
+    if any(x is None or not math.isfinite(x) for x in xs):
+        _fail(f"{where}.{key}", f"must be a list of 3 finite numbers, got {show(v)}")
+    if any(abs(x) > MAX_MAGNITUDE for x in xs):
+        _fail(f"{where}.{key}", f"values must lie within ±{MAX_MAGNITUDE:g}, got {show(v)}")
+    return tuple(xs)
 
 
 def _axis(d: Mapping, where: str, default="z"):
@@ -601,7 +605,7 @@ def _axis(d: Mapping, where: str, default="z"):
     v = d["axis"]
     if isinstance(v, str):
         if v not in _AXES:
-            _fail(f"{where}.axis", f"must be 'x', 'y', 'z' or a 3-vector, got {v!r}")
+            _fail(f"{where}.axis", f"must be 'x', 'y', 'z' or a 3-vector, got {show(v)}")
         return v
     a = _vec(d, "axis", where)
     if a == (0.0, 0.0, 0.0):
@@ -676,16 +680,16 @@ def from_dict(d, where: str = "csg") -> Node:
     if "op" in d:
         kind = d["op"]
         if kind not in OP_KINDS:
-            _fail(where, f"unknown op {kind!r}; valid: {', '.join(OP_KINDS)}")
-        _check_keys(d, ("op", "children"), where, f"op {kind!r}")
+            _fail(where, f"unknown op {show(kind)}; valid: {', '.join(OP_KINDS)}")
+        _check_keys(d, ("op", "children"), where, f"op {show(kind)}")
         children = d.get("children")
         if not isinstance(children, (list, tuple)) or not children:
-            _fail(where, f"op {kind!r} needs a non-empty list 'children'")
+            _fail(where, f"op {show(kind)} needs a non-empty list 'children'")
         return Op(kind, tuple(from_dict(c, f"{where}.children[{i}]") for i, c in enumerate(children)))
 
     name = d["primitive"]
     if name not in PRIMITIVE_NAMES:
-        _fail(where, f"unknown primitive {name!r}; valid: {', '.join(PRIMITIVE_NAMES)}")
+        _fail(where, f"unknown primitive {show(name)}; valid: {', '.join(PRIMITIVE_NAMES)}")
     origin = (0.0, 0.0, 0.0)
     if name == "box":
         _check_keys(d, ("primitive", "size", "center"), where, "primitive 'box'")
@@ -694,7 +698,7 @@ def from_dict(d, where: str = "csg") -> Node:
         _check_keys(d, ("primitive", "radius", "center"), where, "primitive 'sphere'")
         return sphere(_num(d, "radius", where, 0.5, positive=True), _vec(d, "center", where, origin))
     if name in ("cylinder", "cone"):
-        _check_keys(d, ("primitive", "radius", "height", "center", "axis"), where, f"primitive {name!r}")
+        _check_keys(d, ("primitive", "radius", "height", "center", "axis"), where, f"primitive {show(name)}")
         make = cylinder if name == "cylinder" else cone
         return make(_num(d, "radius", where, 0.5, positive=True), _num(d, "height", where, 1.0, positive=True),
                     _vec(d, "center", where, origin), _axis(d, where))

@@ -62,6 +62,7 @@ def _page(rows: list[dict]) -> str:
 def run_demo(out: Path, names: list[str]) -> int:
     """Compare the named presets into ``out``; print where everything is. Exit status 0/1."""
     from compare.report import compare_scene, summary_line, write_json
+    from lab.atomic import write_text
     from lab.cli import preset_description
 
     out.mkdir(parents=True, exist_ok=True)
@@ -80,7 +81,7 @@ def run_demo(out: Path, names: list[str]) -> int:
         print(f"  {verdict(m):<15} {summary_line(m)}")
     write_json(out / "summary.json", {"scenes": rows})
     page = out / "index.html"
-    page.write_text(_page(rows), encoding="utf-8")
+    write_text(page, _page(rows))
     print(f"\nside-by-side panels: {out}/<scene>/side_by_side.png")
     print(f"all of them on one page: {page.resolve()}")
     return 0 if all(verdict(m) in ("pass", "fails as meant") for m in rows) else 1

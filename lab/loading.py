@@ -7,9 +7,12 @@ one-line message names the file and the key. Colours are quantised to k/255 on l
 from __future__ import annotations
 
 import difflib
+import errno
 import inspect
 import math
+import os
 import tomllib
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -18,9 +21,13 @@ from lab import shapes
 from lab.mesh import Mesh
 from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, TRANSPARENCIES, Camera, Image,
                        Light, Material, RenderSettings, Scene, SceneObject, headlight)
+from lab.values import MAX_MAGNITUDE, file_problem, real, show
 from renderer.transform import model_matrix
 
 MAX_SIZE = 8192
+"""Largest image width and height without ``--allow-large`` (pixels)."""
+LARGE_SIZE = 65536
+"""Largest image width and height with ``--allow-large`` (pixels)."""
 CSG_SEGMENTS = 128
 SCENES_DIR = Path(__file__).parent / "scenes"
 
@@ -31,7 +38,10 @@ class SceneError(ValueError):
 
 # --------------------------------------------------------------------------- values
 class _Section:
-    """Reads typed values from one TOML table, naming ``file: table.key`` in errors."""
+    """Reads typed values from one TOML table, naming ``file: table.key`` in errors.
+
+    Every number must be finite and within ±MAX_MAGNITUDE, besides its own range.
+    """
 
     def __init__(self, source: str, where: str, table: dict, allowed: set[str]):
         self.source, self.where, self.table = source, where, table
@@ -39,19 +49,20 @@ class _Section:
             if key not in allowed:
                 near = difflib.get_close_matches(key, sorted(allowed), n=1)
                 hint = f" (did you mean '{near[0]}'?)" if near else f" (valid: {', '.join(sorted(allowed))})"
-                raise self.error(key, f"unknown key{hint}")
+                raise self.error(key if key.isidentifier() else show(key, 40), f"unknown key{hint}")
 
     def error(self, key: str, message: str) -> SceneError:
         where = f"{self.where}.{key}" if self.where else key
         return SceneError(f"{self.source}: {where}: {message}")
 
     def number(self, key, default, lo=-math.inf, hi=math.inf, lo_open=False, hi_open=False):
-        v = self.table.get(key, default)
-        if isinstance(v, bool) or not isinstance(v, (int, float)):
-            raise self.error(key, f"expected a number, got {v!r}")
-        v = float(v)
+        raw = self.table.get(key, default)
+        v = real(raw)
+        if v is None:
+            raise self.error(key, f"expected a number, got {show(raw)}")
         if not math.isfinite(v):
-            raise self.error(key, f"must be finite, got {v!r}")
+            raise self.error(key, f"must be finite, got {show(raw)}")
+        lo, hi = max(lo, -MAX_MAGNITUDE), min(hi, MAX_MAGNITUDE)
         if v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi):
             lb = "(" if lo_open else "["
             hb = ")" if hi_open else "]"
@@ -63,14 +74,15 @@ class _Section:
         if v is None:
             return None
         if not isinstance(v, (list, tuple)) or len(v) != n:
-            raise self.error(key, f"expected a list of {n} numbers, got {v!r}")
+            raise self.error(key, f"expected a list of {n} numbers, got {show(v)}")
+        lo, hi = max(lo, -MAX_MAGNITUDE), min(hi, MAX_MAGNITUDE)
         out = []
-        for x in v:
-            if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x):
-                raise self.error(key, f"expected {n} finite numbers, got {v!r}")
+        for x in map(real, v):
+            if x is None or not math.isfinite(x):
+                raise self.error(key, f"expected {n} finite numbers, got {show(v)}")
             if x < lo or x > hi:
-                raise self.error(key, f"values must lie in [{lo:g}, {hi:g}], got {v!r}")
-            out.append(float(x))
+                raise self.error(key, f"values must lie in [{lo:g}, {hi:g}], got {show(v)}")
+            out.append(x)
         return tuple(out)
 
     def colour(self, key, default):
@@ -80,13 +92,13 @@ class _Section:
     def flag(self, key, default):
         v = self.table.get(key, default)
         if not isinstance(v, bool):
-            raise self.error(key, f"expected true or false, got {v!r}")
+            raise self.error(key, f"expected true or false, got {show(v)}")
         return v
 
     def choice(self, key, default, choices):
         v = self.table.get(key, default)
-        if v not in choices:
-            raise self.error(key, f"{v!r} is not one of {', '.join(choices)}")
+        if not isinstance(v, str) or v not in choices:
+            raise self.error(key, f"{show(v)} is not one of {', '.join(choices)}")
         return v
 
 
@@ -95,12 +107,28 @@ def quantise_colour(c) -> tuple[float, float, float]:
     return tuple(round(float(x) * 255.0) / 255.0 for x in c)
 
 
+def size_problem(size, allow_large: bool = False) -> str | None:
+    """What is wrong with an image size (width, height) in pixels, or None.
+
+    Both must be whole numbers from 1 to MAX_SIZE, or to LARGE_SIZE with ``allow_large``.
+    """
+    limit = LARGE_SIZE if allow_large else MAX_SIZE
+    w, h = size
+    if any(x != int(x) or x < 1 for x in size):
+        return f"expected two whole numbers of at least 1, got {w:g}x{h:g}"
+    if w > limit or h > limit:
+        hint = "" if allow_large else f" (--allow-large lifts it to {LARGE_SIZE}x{LARGE_SIZE})"
+        return f"{int(w)}x{int(h)} is beyond the limit of {limit}x{limit} pixels{hint}"
+    return None
+
+
 # --------------------------------------------------------------------------- sections
-def _image(src, table) -> Image:
+def _image(src, table, allow_large=False) -> Image:
     s = _Section(src, "image", table, {"size", "background"})
     size = s.vector("size", (512, 384), 2)
-    if any(x != int(x) or x < 1 or x > MAX_SIZE for x in size):
-        raise s.error("size", f"expected two whole numbers in 1..{MAX_SIZE}, got {list(size)}")
+    problem = size_problem(size, allow_large)
+    if problem:
+        raise s.error("size", problem)
     return Image(size=(int(size[0]), int(size[1])), background=s.colour("background", (1.0, 1.0, 1.0)))
 
 
@@ -166,7 +194,8 @@ OBJECT_KEYS = {"mesh", "shape", "params", "color", "ambient", "diffuse", "specul
                "texture", "texture_filter", "texture_wrap"}
 
 
-def _object(src, base: Path | None, i, table) -> SceneObject:
+def _object(src, base: Path | None, i, table, inputs: list) -> SceneObject:
+    """One ``[[object]]``; the files it reads (mesh, texture) are appended to ``inputs``."""
     s = _Section(src, f"object[{i}]", table, OBJECT_KEYS)
     sources = [k for k in ("mesh", "shape", "csg") if k in table]
     if len(sources) != 1:
@@ -174,12 +203,12 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
     if "csg" in table:
         mesh, name = _csg(s, table["csg"]), "csg"
     elif "mesh" in table:
-        mesh = _mesh_file(s, base, table["mesh"])
+        mesh = _mesh_file(s, base, table["mesh"], inputs)
         name = Path(str(table["mesh"])).stem
     else:
         params = table.get("params", {})
         if not isinstance(params, dict):
-            raise s.error("params", f"expected a table like {{ level = 3 }}, got {params!r}")
+            raise s.error("params", f"expected a table like {{ level = 3 }}, got {show(params)}")
         mesh = make_shape(table["shape"], params, where=lambda m: s.error("shape", m))
         name = str(table["shape"])
     mat = Material(color=s.colour("color", (1.0, 1.0, 1.0)), ambient=s.number("ambient", 0.0, 0.0, 1.0),
@@ -190,7 +219,7 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
                    ambient_color=s.colour("ambient_color", None), diffuse_color=s.colour("diffuse_color", None),
                    shininess=s.number("shininess", 0.0, 0.0, 128.0))
     mesh = _normals(s, mesh, table)
-    texture = _texture(s, base, mesh, table)
+    texture = _texture(s, base, mesh, table, inputs)
     m = model_matrix(scale=s.vector("scale", (1.0, 1.0, 1.0)), rotate=s.vector("rotate", (0.0, 0.0, 0.0)),
                      translate=s.vector("translate", (0.0, 0.0, 0.0)))
     if abs(np.linalg.det(m[:3, :3])) < 1e-300:
@@ -199,7 +228,7 @@ def _object(src, base: Path | None, i, table) -> SceneObject:
                        model_to_world=m, name=str(table.get("name", name)), texture=texture)
 
 
-def _texture(s: _Section, base: Path | None, mesh: Mesh, table: dict):
+def _texture(s: _Section, base: Path | None, mesh: Mesh, table: dict, inputs: list):
     """The object's texture image and sampling rules, or None."""
     from lab.texture import FILTERS, WRAPS, load_texture
 
@@ -209,12 +238,14 @@ def _texture(s: _Section, base: Path | None, mesh: Mesh, table: dict):
         return None
     value = table["texture"]
     if not isinstance(value, str):
-        raise s.error("texture", f"expected an image file name, got {value!r}")
+        raise s.error("texture", f"expected an image file name, got {show(value)}")
     if mesh.tcoords is None:
         raise s.error("texture", "the mesh has no texture coordinates (a mesh file with them, or a built-in "
                                  "icosphere, cylinder or cone with params uv = 1)")
     try:
-        return load_texture(resolve_path(base, value), filt, wrap)
+        path = resolve_path(base, value)
+        inputs.append(path)
+        return load_texture(path, filt, wrap)
     except ValueError as exc:
         raise s.error("texture", str(exc)) from None
 
@@ -229,7 +260,7 @@ def _csg(s: _Section, tree) -> Mesh:
     from lab import csg
 
     if not isinstance(tree, dict):
-        raise s.error("csg", f"expected a table such as {{ op = \"union\", children = [...] }}, got {tree!r}")
+        raise s.error("csg", f"expected a table such as {{ op = \"union\", children = [...] }}, got {show(tree)}")
     try:
         return csg.to_mesh(csg.from_dict(tree, where="csg"), segments=CSG_SEGMENTS)
     except ValueError as exc:  # its message starts with the path in the tree, "csg.children[0]…: …"
@@ -276,13 +307,15 @@ def resolve_path(base: Path | None, value: str) -> Path:
     return Path(value) if base is None else base / value
 
 
-def _mesh_file(s: _Section, base: Path | None, value) -> Mesh:
+def _mesh_file(s: _Section, base: Path | None, value, inputs: list) -> Mesh:
     from lab.meshfiles import MeshFileError, read_mesh
 
     if not isinstance(value, str):
-        raise s.error("mesh", f"expected a file name, got {value!r}")
+        raise s.error("mesh", f"expected a file name, got {show(value)}")
     try:
-        return read_mesh(resolve_path(base, value))
+        path = resolve_path(base, value)
+        inputs.append(path)
+        return read_mesh(path)
     except (MeshFileError, ValueError) as exc:
         raise s.error("mesh", str(exc)) from None
 
@@ -294,19 +327,18 @@ def make_shape(name, params: dict, where=None) -> Mesh:
     ``where(message)`` makes the exception to raise (so a scene file can name its key).
     """
     err = where or SceneError
-    if name not in shapes.SHAPES:
-        raise err(f"unknown shape {name!r}; valid: {', '.join(shapes.SHAPES)}")
+    if not isinstance(name, str) or name not in shapes.SHAPES:
+        raise err(f"unknown shape {show(name)}; valid: {', '.join(shapes.SHAPES)}")
     sig = inspect.signature(shapes.SHAPES[name])
     for key, value in params.items():
         if key not in sig.parameters:
-            raise err(f"{name} has no parameter {key!r}; valid: {', '.join(sig.parameters)}")
+            raise err(f"{name} has no parameter {show(key)}; valid: {', '.join(sig.parameters)}")
         default = sig.parameters[key].default
         lo, hi = shapes.PARAM_RANGES.get((name, key), (0, 8))
         if isinstance(default, int) and (not isinstance(value, int) or isinstance(value, bool) or not lo <= value <= hi):
-            raise err(f"{name}: {key} must be a whole number in {lo}..{hi}, got {value!r}")
-        if isinstance(default, float) and (isinstance(value, bool) or not isinstance(value, (int, float))
-                                           or not math.isfinite(value) or value <= 0):
-            raise err(f"{name}: {key} must be a positive number, got {value!r}")
+            raise err(f"{name}: {key} must be a whole number in {lo}..{hi}, got {show(value)}")
+        if isinstance(default, float) and not 0 < (real(value) or 0) <= MAX_MAGNITUDE:
+            raise err(f"{name}: {key} must be a positive number up to {MAX_MAGNITUDE:g}, got {show(value)}")
     return shapes.SHAPES[name](**params)
 
 
@@ -355,8 +387,10 @@ def shape_scene(spec: str) -> Scene:
 
 
 # --------------------------------------------------------------------------- entry point
-def load_scene(path_or_name) -> Scene:
+def load_scene(path_or_name, allow_large: bool = False) -> Scene:
     """Load a scene file (TOML), a preset name from ``lab/scenes``, or a shape spec.
+
+    ``allow_large`` lifts the image size limit (MAX_SIZE × MAX_SIZE pixels).
 
     Examples
     --------
@@ -367,28 +401,50 @@ def load_scene(path_or_name) -> Scene:
     path = Path(text)
     if path.suffix.lower() != ".toml":
         preset = SCENES_DIR / f"{text}.toml"
-        if preset.is_file():
+        if file_problem(preset) is None:
             path = preset
         elif text.partition(":")[0] in shapes.SHAPES:
             return shape_scene(text)
-        elif not path.exists():
-            raise SceneError(f"{text}: no such scene file, preset or shape "
+        elif file_problem(path) == os.strerror(errno.ENOENT):
+            raise SceneError(f"{text if len(text) <= 200 else text[:199] + '…'}: no such scene file, preset or shape "
                              f"(shapes: {', '.join(shapes.SHAPES)}; presets: `scanlab scenes`)")
+    problem = file_problem(path)
+    if problem:
+        raise SceneError(f"{path}: cannot read: {problem}")
     try:
         raw = path.read_bytes()
     except OSError as exc:
         raise SceneError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    scene = parse_scene(raw, source=str(path), base=path.parent, allow_large=allow_large)
+    return replace(scene, inputs=(str(path),) + scene.inputs)
+
+
+def parse_scene(raw: bytes, source: str = "<scene>", base: Path | None = None, allow_large: bool = False) -> Scene:
+    """Parse the bytes of a scene file named ``source`` (relative paths start at ``base``).
+
+    Raises SceneError for anything wrong, from UTF-8 and TOML syntax (with line and
+    column) to every key; :mod:`lab.fuzz` checks that nothing else escapes.
+    """
     try:
         data = tomllib.loads(raw.decode("utf-8"))
-    except UnicodeDecodeError:
-        raise SceneError(f"{path}: not a UTF-8 text file") from None
+    except UnicodeDecodeError as exc:
+        raise SceneError(f"{source}: not a UTF-8 text file (byte {exc.start})") from None
     except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"{path}: TOML syntax error: {exc}") from None
-    return scene_from_dict(data, source=str(path), base=path.parent)
+        raise SceneError(f"{source}: TOML syntax error: {exc}") from None
+    except ValueError as exc:  # tomllib's int(): Python converts at most 4300 digits
+        raise SceneError(f"{source}: TOML: a number too long to read ({show(str(exc), 80)})") from None
+    except RecursionError:
+        raise SceneError(f"{source}: TOML: arrays or tables nested too deeply") from None
+    return scene_from_dict(data, source=source, base=base, allow_large=allow_large)
 
 
-def scene_from_dict(data: dict, source: str = "<scene>", base: Path | None = None) -> Scene:
-    """Build a validated :class:`Scene` from parsed TOML (see the README for the keys)."""
+def scene_from_dict(data: dict, source: str = "<scene>", base: Path | None = None,
+                    allow_large: bool = False) -> Scene:
+    """Build a validated :class:`Scene` from parsed TOML (see the README for the keys).
+
+    ``allow_large`` lifts the image size limit of MAX_SIZE × MAX_SIZE pixels (up to
+    LARGE_SIZE on each side).
+    """
     _Section(source, "", data, {"image", "camera", "light", "object", "render"})
 
     def table(key, want):
@@ -398,9 +454,11 @@ def scene_from_dict(data: dict, source: str = "<scene>", base: Path | None = Non
             raise SceneError(f"{source}: {key}: expected {kind}")
         return v
 
-    objects = tuple(_object(source, base, i, t) for i, t in enumerate(table("object", list)))
+    inputs: list[Path] = []
+    objects = tuple(_object(source, base, i, t, inputs) for i, t in enumerate(table("object", list)))
     if not objects:
         raise SceneError(f"{source}: object: the scene has no [[object]]")
     lights = tuple(_light(source, i, t) for i, t in enumerate(table("light", list))) or (headlight(),)
-    return Scene(image=_image(source, table("image", dict)), camera=_camera(source, table("camera", dict)),
-                 lights=lights, objects=objects, source=source, render=_render(source, table("render", dict)))
+    return Scene(image=_image(source, table("image", dict), allow_large), camera=_camera(source, table("camera", dict)),
+                 lights=lights, objects=objects, source=source, render=_render(source, table("render", dict)),
+                 inputs=tuple(str(p) for p in inputs))

@@ -230,6 +230,8 @@ class Scene:
     objects: tuple[SceneObject, ...]
     source: str = "<scene>"
     render: RenderSettings = field(default_factory=RenderSettings)
+    inputs: tuple[str, ...] = ()
+    """The files the scene was read from (scene file, meshes, textures): never to be overwritten."""
 
     def world_bounds(self) -> np.ndarray:
         """Union of the objects' :meth:`SceneObject.world_bounds` (VTK's visible-prop bounds)."""

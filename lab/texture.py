@@ -12,6 +12,8 @@ from pathlib import Path
 
 import numpy as np
 
+from lab.values import file_problem
+
 FILTERS = ("nearest", "linear")
 WRAPS = ("repeat", "clamp")
 
@@ -44,9 +46,17 @@ def load_texture(path, filter: str = "nearest", wrap: str = "repeat") -> Texture
     """
     from PIL import Image, UnidentifiedImageError
 
+    problem = file_problem(path)
+    if problem:
+        raise ValueError(f"{path}: cannot read the texture image ({problem})")
     try:
         with Image.open(path) as im:
             rgb = np.asarray(im.convert("RGB"), dtype=np.float64) / 255.0
-    except (OSError, UnidentifiedImageError) as exc:
-        raise ValueError(f"{path}: cannot read the texture image ({exc.__class__.__name__})") from None
+    except UnidentifiedImageError:
+        raise ValueError(f"{path}: not an image file Pillow can read") from None
+    except (OSError, Image.DecompressionBombError) as exc:  # missing, a folder, truncated, too many pixels
+        reason = getattr(exc, "strerror", None) or " ".join(str(exc).split())[:100] or type(exc).__name__
+        raise ValueError(f"{path}: cannot read the texture image ({reason})") from None
+    if rgb.ndim != 3 or rgb.shape[0] < 1 or rgb.shape[1] < 1:
+        raise ValueError(f"{path}: the texture image has no pixels")
     return Texture(texels=np.ascontiguousarray(rgb[::-1]), filter=filter, wrap=wrap, source=str(Path(path)))

@@ -12,7 +12,8 @@
 from __future__ import annotations
 
 import dataclasses
-import shutil
+import os
+import tempfile
 from pathlib import Path
 
 from compare.images import side_by_side_figure
@@ -53,13 +54,17 @@ def interpolation_figure(out: Path) -> dict:
 
 def gouraud_vs_vtk_figure(out: Path) -> dict:
     """Write ``gouraud-vs-vtk.png`` (textbook sphere, OpenGL Gouraud vs VTK native)."""
-    from compare.report import compare_scene
+    from compare.report import OUTPUT_FILES, compare_scene
 
     scene = load_scene("textbook-sphere").with_overrides(model="opengl", shading="gouraud")
-    work = out / ".gouraud-vs-vtk"
-    m = compare_scene(scene, work, name="textbook-sphere: OpenGL Gouraud vs VTK", reference="vtk-native")
-    shutil.copyfile(work / "side_by_side.png", out / "gouraud-vs-vtk.png")
-    shutil.rmtree(work)
+    work = Path(tempfile.mkdtemp(dir=out, prefix=".gouraud-vs-vtk."))  # new, so everything in it is ours
+    try:
+        m = compare_scene(scene, work, name="textbook-sphere: OpenGL Gouraud vs VTK", reference="vtk-native")
+        os.replace(work / "side_by_side.png", out / "gouraud-vs-vtk.png")  # atomic: the same folder tree
+    finally:
+        for name in OUTPUT_FILES:  # only what compare_scene wrote
+            (work / name).unlink(missing_ok=True)
+        work.rmdir()
     return m
 
 

@@ -10,6 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from lab.mesh import Mesh, fan_triangulate
+from lab.values import MAX_MAGNITUDE, file_problem
 
 
 class MeshFileError(ValueError):
@@ -18,7 +19,13 @@ class MeshFileError(ValueError):
 
 @contextlib.contextmanager
 def reading(path):
-    """Yield the bytes of ``path``; turn any error inside the block into MeshFileError."""
+    """Yield the bytes of ``path``; turn any error inside the block into MeshFileError.
+
+    Only regular files are read (a folder, a device such as /dev/zero or a pipe is refused).
+    """
+    problem = file_problem(path)
+    if problem:
+        raise MeshFileError(f"{path}: cannot read file: {problem}")
     try:
         yield Path(path).read_bytes()
     except MeshFileError:
@@ -36,11 +43,18 @@ def reading(path):
 
 def make_mesh(points, triangles, normals=None, tcoords=None) -> Mesh:
     """Check points, triangles, normals and texture coordinates, make normals unit length,
-    build the Mesh."""
+    build the Mesh: the one place every reader's mesh is validated.
+
+    Refused (ValueError, which :func:`reading` prefixes with the path): NaN, infinite or
+    beyond ±MAX_MAGNITUDE coordinates; no triangles; point indices out of range; normals
+    or texture coordinates not one per point, or not finite.
+    """
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     triangles = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
     if not np.isfinite(points).all():
         raise ValueError("point coordinates contain NaN or infinity")
+    if len(points) and np.abs(points).max() > MAX_MAGNITUDE:
+        raise ValueError(f"point coordinates beyond ±{MAX_MAGNITUDE:g}")
     if len(triangles) == 0:
         raise ValueError("no triangles")
     if triangles.min() < 0 or triangles.max() >= len(points):

@@ -10,35 +10,20 @@
   (``Normals="Normals"``) and texture coordinates (``TCoords="TCoords"``, 2 components),
   Int64 connectivity and offsets.
 
-Every writer goes through a temporary file in the target folder and a rename, so an
-interrupted export never leaves half a file.
+Every writer goes through a temporary file in the target folder and a rename
+(:func:`lab.atomic.atomic_file`), so an interrupted export never leaves half a file.
 """
 from __future__ import annotations
 
 import base64
-import os
 import struct
-import tempfile
-from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
 
+from lab.atomic import atomic_file
 from lab.mesh import Mesh
 from lab.meshfiles._common import MeshFileError
-
-
-@contextmanager
-def _atomic(path):
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            yield f
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def write_ply(mesh: Mesh, path) -> None:
@@ -56,7 +41,7 @@ def write_ply(mesh: Mesh, path) -> None:
     verts = np.hstack(columns)
     faces = np.zeros(mesh.n_triangles, dtype=[("n", "u1"), ("v", "<i4", (3,))])
     faces["n"], faces["v"] = 3, mesh.triangles
-    with _atomic(path) as f:
+    with atomic_file(path) as f:
         f.write(header.encode("ascii"))
         f.write(np.ascontiguousarray(verts, dtype="<f8").tobytes())
         f.write(faces.tobytes())
@@ -75,7 +60,7 @@ def write_obj(mesh: Mesh, path) -> None:
               (True, True): "{0}/{0}/{0}"}[mesh.tcoords is not None, mesh.point_normals is not None]
     face = f"f {corner} {corner.replace('0', '1')} {corner.replace('0', '2')}"
     lines += [face.format(a, b, c) for a, b, c in mesh.triangles + 1]
-    with _atomic(path) as f:
+    with atomic_file(path) as f:
         f.write(("\n".join(lines) + "\n").encode("ascii"))
 
 
@@ -87,7 +72,7 @@ def write_stl(mesh: Mesh, path) -> None:
     n = np.divide(n, length, out=np.zeros_like(n), where=length > 0)
     rec = np.zeros(mesh.n_triangles, dtype=[("n", "<f4", (3,)), ("v", "<f4", (3, 3)), ("a", "<u2")])
     rec["n"], rec["v"] = n, p
-    with _atomic(path) as f:
+    with atomic_file(path) as f:
         f.write(b"scanlab binary STL".ljust(80, b" "))
         f.write(struct.pack("<I", mesh.n_triangles))
         f.write(rec.tobytes())
@@ -120,16 +105,21 @@ def write_vtp(mesh: Mesh, path) -> None:
            f'<Points>{_vtp_array("Points", mesh.points.astype("<f8"), "Float64", 3)}</Points>\n'
            f'<Polys>{_vtp_array("connectivity", conn, "Int64", 1)}{_vtp_array("offsets", offsets, "Int64", 1)}'
            '</Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n')
-    with _atomic(path) as f:
+    with atomic_file(path) as f:
         f.write(xml.encode("ascii"))
 
 
 WRITERS = {".ply": write_ply, ".obj": write_obj, ".stl": write_stl, ".vtp": write_vtp}
 
 
-def write_mesh(mesh: Mesh, path) -> None:
-    """Write ``mesh`` in the format its suffix names (.ply, .obj, .stl, .vtp)."""
+def writer_for(path):
+    """The writer for ``path``'s suffix (any case); MeshFileError if there is none."""
     suffix = Path(path).suffix.lower()
     if suffix not in WRITERS:
         raise MeshFileError(f"{path}: cannot write {suffix!r} files (known: {', '.join(WRITERS)})")
-    WRITERS[suffix](mesh, path)
+    return WRITERS[suffix]
+
+
+def write_mesh(mesh: Mesh, path) -> None:
+    """Write ``mesh`` in the format its suffix names (.ply, .obj, .stl, .vtp)."""
+    writer_for(path)(mesh, path)
