@@ -63,9 +63,19 @@ class Mesh:
         return len(self.triangles)
 
     def bounds(self) -> np.ndarray:
-        """(xmin, xmax, ymin, ymax, zmin, zmax) of the points, VTK's bounds order."""
-        lo = self.points.min(axis=0)
-        hi = self.points.max(axis=0)
+        """(xmin, xmax, ymin, ymax, zmin, zmax) of the points that triangles use, VTK's order.
+
+        As ``vtkPolyData::ComputeBounds``: points no triangle references are left out (a
+        mesh without triangles uses all its points). The bounds fit the camera's clipping
+        range, so an unreferenced point far away must not widen it.
+        """
+        points = self.points
+        if self.n_triangles:
+            used = np.zeros(self.n_points, np.bool_)
+            used[self.triangles.ravel()] = True
+            points = points[used]
+        lo = points.min(axis=0)
+        hi = points.max(axis=0)
         return np.array([lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]])
 
 

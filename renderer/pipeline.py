@@ -89,6 +89,10 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
 
 MODEL_CODES = {"vtk": 0, "opengl": OPENGL, "classic": CLASSIC}
 
+VTK_MAX_SPECULAR_POWER = 128.0
+"""``vtkProperty::SetSpecularPower`` clamps to [0, 128]: a larger power in the vtk model
+draws as 128 (measured: 1000 is read back as 128.0). The classic model keeps any power."""
+
 
 def object_kind(obj) -> int:
     """How the shading kernel treats an object: by model, shading and whether it has normals."""
@@ -103,9 +107,9 @@ def object_kind(obj) -> int:
 def object_table(scene, complexity: int) -> ObjectTable:
     """Per-object shading data for the kernels.
 
-    amb, dif, spe, power by model — vtk: Ka·C, Kd·C, Ks·Cs, specular power; opengl: the
-    material's ambient, diffuse and specular colours and its shininess; classic: Ka·O,
-    Kd·O, Ks·(1, 1, 1), n.
+    amb, dif, spe, power by model — vtk: Ka·C, Kd·C, Ks·Cs, specular power (at most
+    :data:`VTK_MAX_SPECULAR_POWER`, as VTK clamps it); opengl: the material's ambient,
+    diffuse and specular colours and its shininess; classic: Ka·O, Kd·O, Ks·(1, 1, 1), n.
     """
     kind, model, comp, amb, dif, spe, power = [], [], [], [], [], [], []
     for obj in scene.objects:
@@ -123,7 +127,7 @@ def object_table(scene, complexity: int) -> ObjectTable:
         else:
             amb.append(m.ambient * colour), dif.append(m.diffuse * colour)
             spe.append(m.specular * np.asarray(m.effective_specular_color))
-            power.append(m.specular_power)
+            power.append(min(m.specular_power, VTK_MAX_SPECULAR_POWER))
     r = scene.render
     tex = texture_table(scene)
     return ObjectTable(np.array(kind, np.int64), np.array(model, np.int64), np.array(comp, np.int64),

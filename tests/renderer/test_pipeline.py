@@ -162,3 +162,20 @@ def test_threads_and_bands_do_not_change_a_byte():
         many = rasterize_triangles(fixed, window, 97, 61, n_bands=bands)
         for a, b in zip(one, many):
             assert np.array_equal(a[one[1] >= 0] if a.ndim == 3 else a, b[one[1] >= 0] if b.ndim == 3 else b)
+
+
+def test_vtk_model_clamps_the_specular_power_to_128_as_vtk_does():
+    """vtkProperty clamps SpecularPower to [0, 128]: 1000 draws as 128 in the vtk model; the classic model keeps it."""
+    from dataclasses import replace
+
+    from renderer.pipeline import object_table
+
+    scene = tiny_scene()
+    shiny = scene.objects[0]
+    classic = replace(shiny, material=replace(shiny.material, specular_power=1000.0, model="classic"))
+    objs = (replace(shiny, material=replace(shiny.material, specular_power=1000.0)), classic)
+    table = object_table(replace(scene, objects=objs), 3)
+    assert table.power.tolist() == [128.0, 1000.0]
+    at_1000 = render(replace(scene, objects=objs[:1]))
+    at_128 = render(replace(scene, objects=(replace(shiny, material=replace(shiny.material, specular_power=128.0)),)))
+    assert np.array_equal(at_1000.rgb, at_128.rgb)
