@@ -135,14 +135,11 @@ def opengl_colour_parts(P, N, ambient, diffuse, specular, shininess, lights, glo
 
 
 def opengl_colours(P, N, ambient, diffuse, specular, shininess, lights, global_ambient=(0.2, 0.2, 0.2),
-                   local_viewer=False, separate_specular=False):
+                   local_viewer=False) -> np.ndarray:
     """OpenGL 1.x fixed-function colour (M,3) at view-space points P with normals N, clamped
-    to 0..1 (``GL_SINGLE_COLOR``). With ``separate_specular`` (``GL_SEPARATE_SPECULAR_COLOR``)
-    the pair (primary, secondary), each clamped on its own, as the specification has it."""
+    to 0..1 (``GL_SINGLE_COLOR``: both parts of :func:`opengl_colour_parts` summed first)."""
     primary, secondary = opengl_colour_parts(P, N, ambient, diffuse, specular, shininess, lights, global_ambient,
                                              local_viewer)
-    if separate_specular:
-        return np.clip(primary, 0.0, 1.0), np.clip(secondary, 0.0, 1.0)
     return np.clip(primary + secondary, 0.0, 1.0)
 
 

@@ -16,7 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from compare.textbook_lighting import EyeLight, classic_colours, face_points_and_normals, opengl_colours
+from compare.textbook_lighting import (EyeLight, classic_colours, face_points_and_normals, opengl_colour_parts,
+                                      opengl_colours)
 
 NATIVE, UNLIT, SHADER, NONE = "vtk-native", "vtk-unlit-colours", "vtk-shader-replacement", "none"
 REFERENCES = (NATIVE, UNLIT, SHADER)
@@ -93,12 +94,13 @@ def lit_colours(obj, actor, renderer, scene, lights) -> tuple[np.ndarray, str, n
         where = "cells"
     m, r = obj.material, scene.render
     secondary = None
-    if m.model == "opengl":
+    if m.model == "opengl" and r.separate_specular:  # GL_SEPARATE_SPECULAR_COLOR: each part clamped on its own
+        rgb, secondary = (np.clip(part, 0.0, 1.0) for part in opengl_colour_parts(
+            points, normals, m.gl_ambient, m.gl_diffuse, m.gl_specular, m.shininess, lights,
+            global_ambient=np.asarray(r.global_ambient), local_viewer=r.local_viewer))
+    elif m.model == "opengl":
         rgb = opengl_colours(points, normals, m.gl_ambient, m.gl_diffuse, m.gl_specular, m.shininess, lights,
-                             global_ambient=np.asarray(r.global_ambient), local_viewer=r.local_viewer,
-                             separate_specular=r.separate_specular)
-        if r.separate_specular:
-            rgb, secondary = rgb
+                             global_ambient=np.asarray(r.global_ambient), local_viewer=r.local_viewer)
     else:
         rgb = classic_colours(points, normals, np.asarray(m.color), m.ambient, m.diffuse, m.specular,
                               m.specular_power, lights, ambient_light=np.asarray(r.ambient))
