@@ -1,0 +1,15 @@
+"""Hypothesis profiles for the property-based tests (``tests/*/test_properties.py``).
+
+``HYPOTHESIS_PROFILE=ci`` (the default): few examples, derandomized, so every run of
+``make test`` draws the same scenes. ``HYPOTHESIS_PROFILE=thorough``: ten times as many,
+freshly random each run, for hunting bugs.
+"""
+import os
+
+from hypothesis import HealthCheck, settings
+
+_common = dict(deadline=None, print_blob=True,
+               suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.filter_too_much])
+settings.register_profile("ci", max_examples=40, derandomize=True, database=None, **_common)
+settings.register_profile("thorough", max_examples=400, **_common)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
