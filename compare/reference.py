@@ -56,12 +56,12 @@ def vtk_material(obj, scene) -> dict:
     the classic model maps one to one (``O·A``, Ka; O, Kd; white, Ks; n).
     """
     m = obj.material
-    if m.model == "opengl":
+    if m.reflection_model == "opengl":
         la = sum((np.asarray(li.ambient_color) for li in scene.lights if li.on), np.zeros(3))
         amb = np.clip((np.asarray(scene.render.global_ambient) + la) * m.gl_ambient, 0.0, 1.0)
         return dict(ambient_color=amb, ambient=1.0, diffuse_color=m.gl_diffuse, diffuse=1.0,
                     specular_color=m.gl_specular, specular=1.0, power=m.shininess / 4.0)
-    if m.model == "classic":
+    if m.reflection_model == "classic":
         return dict(ambient_color=np.asarray(m.color) * np.asarray(scene.render.ambient), ambient=m.ambient,
                     diffuse_color=np.asarray(m.color), diffuse=m.diffuse, specular_color=np.ones(3),
                     specular=m.specular, power=m.specular_power)
@@ -189,7 +189,7 @@ def build_plotter(scene, reference: str | None = None):
         for obj, actor in textbook:
             if object_reference(obj, reference) == SHADER:
                 replace_light_shader(actor, phong_shader(obj, scene, lights),
-                                     scene.render.separate_specular and obj.material.model == "opengl")
+                                     scene.render.separate_specular and obj.material.reflection_model == "opengl")
             else:
                 paint_unlit(actor, *lit_colours(obj, actor, pl.renderer, scene, lights))
     return pl

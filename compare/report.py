@@ -54,7 +54,7 @@ def reference_label(scene, reference: str | None = None) -> str:
     the texture (a float vertex attribute or the replaced shader's own term, added after
     VTK's texture modulation in the same render)."""
     name = scene_reference(scene, reference)
-    separate = scene.render.separate_specular and any(o.material.model == "opengl" for o in scene.objects)
+    separate = scene.render.separate_specular and any(o.material.reflection_model == "opengl" for o in scene.objects)
     return name + "+separate-specular" if separate and name != "vtk-native" else name
 
 

@@ -25,7 +25,7 @@ REFERENCES = (NATIVE, UNLIT, SHADER)
 
 def object_reference(obj, forced: str | None = None) -> str:
     """Which reference draws ``obj``: VTK's own shading, unlit colours, or a replaced shader."""
-    if forced == NATIVE or obj.material.model == "vtk":
+    if forced == NATIVE or obj.material.reflection_model == "vtk":
         return NATIVE
     if obj.shading == "phong" and obj.mesh.point_normals is not None:
         return SHADER

@@ -108,7 +108,8 @@ class Material:
     """VTK's surface property: coefficients 0..1, colours linear 0..1 RGB.
 
     ``specular_color`` None means the object colour (VTK's ``color=`` sets all three).
-    ``lighting`` False draws ``ambient·color + diffuse·color`` unlit.
+    ``lighting`` False draws ``ambient·color + diffuse·color`` unlit, whatever the
+    ``model`` (see :attr:`reflection_model`).
 
     ``model`` chooses the reflection model (see ``renderer/lighting``): "vtk" (VTK's
     own), "opengl" (fixed-function OpenGL: material ``ambient_color`` and
@@ -134,6 +135,12 @@ class Material:
     @property
     def effective_specular_color(self) -> Vec3:
         return self.color if self.specular_color is None else self.specular_color
+
+    @property
+    def reflection_model(self) -> str:
+        """The model that colours the object: ``model``, or "vtk" when ``lighting`` is off,
+        since an unlit object has no reflection model and draws VTK's unlit colour."""
+        return self.model if self.lighting else "vtk"
 
     @property
     def gl_ambient(self) -> np.ndarray:

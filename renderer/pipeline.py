@@ -97,7 +97,7 @@ draws as 128 (measured: 1000 is read back as 128.0). The classic model keeps any
 def object_kind(obj) -> int:
     """How the shading kernel treats an object: by model, shading and whether it has normals."""
     smooth = obj.shading != "flat" and obj.mesh.point_normals is not None
-    if obj.material.model == "vtk":
+    if obj.material.reflection_model == "vtk":
         return VTK_SMOOTH if smooth else VTK_FLAT
     if not smooth:
         return FACE_COLOUR
@@ -115,13 +115,13 @@ def object_table(scene, complexity: int) -> ObjectTable:
     for obj in scene.objects:
         m = obj.material
         kind.append(object_kind(obj))
-        model.append(MODEL_CODES[m.model])
+        model.append(MODEL_CODES[m.reflection_model])
         comp.append(complexity if m.lighting else UNLIT)
         colour = np.asarray(m.color)
-        if m.model == "opengl":
+        if m.reflection_model == "opengl":
             amb.append(m.gl_ambient), dif.append(m.gl_diffuse), spe.append(m.gl_specular)
             power.append(m.shininess)
-        elif m.model == "classic":
+        elif m.reflection_model == "classic":
             amb.append(m.ambient * colour), dif.append(m.diffuse * colour), spe.append(np.full(3, m.specular))
             power.append(m.specular_power)
         else:

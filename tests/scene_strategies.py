@@ -92,11 +92,6 @@ def objects(draw):
            "translate": draw(vec3)}
     if obj["model"] == "opengl":
         obj["shininess"] = draw(st.floats(0.0, 128.0))
-    if obj["model"] != "vtk" and obj["shading"] == "phong":
-        # Known bug, not fixed here: the textbook phong reference replaces VTK's light
-        # shader, which does not compile when lighting is off (VTK then leaves normals out
-        # of its shader: "normalVCVSOutput undeclared") and VTK draws nothing.
-        obj["lighting"] = True
     return obj
 
 

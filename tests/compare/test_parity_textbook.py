@@ -77,3 +77,19 @@ def test_screen_linear_colour_interpolation_fails_the_bars():
     assert_within_bars(measure(render(scene), ref))
     m = measure(render(scene, RenderOptions(interpolation="screen")), ref)
     assert m["pixels_over_1"] > BARS["pixels_over_1"]
+
+
+@pytest.mark.parametrize("shading", ["flat", "gouraud", "phong"])
+@pytest.mark.parametrize("model", ["opengl", "classic"])
+def test_lighting_off_draws_the_unlit_colour_in_every_model(model, shading):
+    """``lighting = false``: no reflection model, so the textbook models draw VTK's unlit
+    ``ambient·color + diffuse·color``, checked against VTK's own unlit render (and not lit)."""
+    scene = scene_with_normals(load_scene("textbook-sphere"), 30.0).with_overrides(model=model, shading=shading)
+    unlit = dataclasses.replace(scene, objects=tuple(
+        dataclasses.replace(o, material=dataclasses.replace(o.material, lighting=False, ambient=0.2, diffuse=0.7))
+        for o in scene.objects))
+    assert scene_reference(unlit) == "vtk-native"
+    ours = render(unlit)
+    assert_within_bars(measure(ours, render_reference(unlit)))
+    colours = ours.rgb[ours.coverage]
+    assert (colours == colours[0]).all()  # one colour: nothing lit it
