@@ -18,7 +18,9 @@ Rules, each in one place:
   sharing an edge never both draw, and never both miss, a pixel on it.
 - **Depth** (:func:`rasterize`): window z interpolated linearly in screen space (it is
   affine there), rounded to the 24-bit depth buffer, test LEQUAL (a later triangle at
-  equal depth wins), cleared to 1.0.
+  equal depth wins), cleared to 1.0. The depth plane is set up from the corners in a
+  canonical order (:func:`depth_plane`), so coincident triangles get bit-identical depths
+  whatever order they list their corners in, and the tie goes to the later one everywhere.
 
 Determinism: every pixel sees the triangles in the order given (objects in scene order,
 triangles in mesh order), as OpenGL guarantees, so ties resolve the same way every run.
@@ -86,6 +88,30 @@ def scanline_span(f, row, rule=TOP_LEFT):
     return first, last
 
 
+@njit(cache=True, inline="always")
+def depth_plane(t, out):
+    """The window depth of triangle ``t`` (3, 3) as a plane ``z = az + zx·(x − ax) + zy·(y − ay)``:
+    writes ``out`` = (ax, ay, az, zx, zy).
+
+    The corners are first sorted (by x, then y, then z), so the same three corners give
+    the same bits in any order: coincident triangles tie exactly in the z-buffer. Where
+    the triangle has no area, zx = zy = 0 (it draws nothing anyway).
+    """
+    a, b, c = 0, 1, 2
+    if (t[b, 0], t[b, 1], t[b, 2]) < (t[a, 0], t[a, 1], t[a, 2]):
+        a, b = b, a
+    if (t[c, 0], t[c, 1], t[c, 2]) < (t[b, 0], t[b, 1], t[b, 2]):
+        b, c = c, b
+    if (t[b, 0], t[b, 1], t[b, 2]) < (t[a, 0], t[a, 1], t[a, 2]):
+        a, b = b, a
+    e1x, e1y, dz1 = t[b, 0] - t[a, 0], t[b, 1] - t[a, 1], t[b, 2] - t[a, 2]
+    e2x, e2y, dz2 = t[c, 0] - t[a, 0], t[c, 1] - t[a, 1], t[c, 2] - t[a, 2]
+    a2 = e1x * e2y - e2x * e1y
+    out[0], out[1], out[2] = t[a, 0], t[a, 1], t[a, 2]
+    out[3] = (dz1 * e2y - dz2 * e1y) / a2 if a2 != 0.0 else 0.0
+    out[4] = (dz2 * e1x - dz1 * e2x) / a2 if a2 != 0.0 else 0.0
+
+
 @njit(cache=True, parallel=True)
 def setup_triangles(tri_fixed, tri_window, height, cull_back, front, ccw, rows, plane):
     """Per-triangle set-up, once: facing, counter-clockwise fixed vertices, rows, planes.
@@ -93,8 +119,9 @@ def setup_triangles(tri_fixed, tri_window, height, cull_back, front, ccw, rows, 
     Writes ``front`` (K,) bool; ``ccw`` (K, 3, 2) fixed vertices ordered
     counter-clockwise (for the span test); ``rows`` (K, 2) first and last window row of
     pixel centres it may cover (empty when first > last: zero area or off-screen);
-    ``plane`` (K, 9): x0, y0, z0, e1x, e1y, dz1, e2x, e2y, dz2 — vertex 0 and the edges to
-    vertices 1 and 2 in float window coordinates, in the triangle's own vertex order.
+    ``plane`` (K, 11): x0, y0, e1x, e1y, e2x, e2y — vertex 0 and the edges to vertices 1
+    and 2 in float window coordinates, in the triangle's own vertex order (for the
+    weights) — then the depth plane ax, ay, az, zx, zy (:func:`depth_plane`).
     With ``cull_back`` a back-facing (clockwise) triangle gets no rows: back-face culling.
     """
     for k in prange(tri_fixed.shape[0]):
@@ -103,13 +130,13 @@ def setup_triangles(tri_fixed, tri_window, height, cull_back, front, ccw, rows, 
         ccw[k] = tri_fixed[k]
         if area < 0:  # orient counter-clockwise for the span test; weights keep source order
             ccw[k, 1], ccw[k, 2] = tri_fixed[k, 2], tri_fixed[k, 1]
-        x0, y0, z0 = tri_window[k, 0, 0], tri_window[k, 0, 1], tri_window[k, 0, 2]
-        plane[k, 0], plane[k, 1], plane[k, 2] = x0, y0, z0
+        x0, y0 = tri_window[k, 0, 0], tri_window[k, 0, 1]
+        plane[k, 0], plane[k, 1] = x0, y0
         for v in range(1, 3):
-            plane[k, 3 * v] = tri_window[k, v, 0] - x0
-            plane[k, 3 * v + 1] = tri_window[k, v, 1] - y0
-            plane[k, 3 * v + 2] = tri_window[k, v, 2] - z0
-        a2 = plane[k, 3] * plane[k, 7] - plane[k, 6] * plane[k, 4]
+            plane[k, 2 * v] = tri_window[k, v, 0] - x0
+            plane[k, 2 * v + 1] = tri_window[k, v, 1] - y0
+        depth_plane(tri_window[k], plane[k, 6:])
+        a2 = plane[k, 2] * plane[k, 5] - plane[k, 4] * plane[k, 3]
         ys = tri_fixed[k, :, 1]
         rows[k, 0] = max(0, ceil_div(ys.min(), SUBPIXEL))
         rows[k, 1] = min(height - 1, ys.max() // SUBPIXEL)
@@ -128,15 +155,13 @@ def row_span(k, row, ccw, width, rule):
 def pixel_fragment(k, row, col, plane):
     """Triangle ``k`` at the centre of pixel (row, col): screen-space weights l1, l2 of its
     vertices 1 and 2, and the window depth rounded to the 24-bit depth buffer."""
-    x0, y0, z0 = plane[k, 0], plane[k, 1], plane[k, 2]
-    e1x, e1y, dz1 = plane[k, 3], plane[k, 4], plane[k, 5]
-    e2x, e2y, dz2 = plane[k, 6], plane[k, 7], plane[k, 8]
+    x0, y0, e1x, e1y, e2x, e2y = plane[k, 0], plane[k, 1], plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5]
     a2 = e1x * e2y - e2x * e1y
     py = row + 0.5 - y0
     px = col + 0.5 - x0
     l1 = (px * e2y - e2x * py) / a2
     l2 = (e1x * py - px * e1y) / a2
-    z = z0 + l1 * dz1 + l2 * dz2
+    z = plane[k, 8] + plane[k, 9] * (col + 0.5 - plane[k, 6]) + plane[k, 10] * (row + 0.5 - plane[k, 7])
     z = np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5) / DEPTH_MAX
     return l1, l2, z
 
@@ -189,7 +214,7 @@ def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back
     front = empty(ws, f"{name}.front", k_count, np.bool_)
     ccw = empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64)
     rows = empty(ws, f"{name}.rows", (k_count, 2), np.int64)
-    plane = empty(ws, f"{name}.plane", (k_count, 9))
+    plane = empty(ws, f"{name}.plane", (k_count, 11))
     setup_triangles(tri_fixed, tri_window, height, bool(cull_back), front, ccw, rows, plane)
     return front, ccw, rows, plane
 

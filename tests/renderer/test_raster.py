@@ -299,6 +299,20 @@ def test_equal_depth_the_later_triangle_wins():
     assert set(np.unique(tri_index).tolist()) == {-1, 1}
 
 
+@pytest.mark.parametrize("order", [(1, 2, 0), (2, 0, 1), (0, 2, 1), (2, 1, 0)])
+def test_coincident_triangles_tie_whatever_their_corner_order(order):
+    """The same sloped triangle listed with its corners in another order has bit-identical
+    depths, so at every pixel the later one wins. Corners on pixel centres with depths
+    0.5, 0.25 and 1.0 put many centres exactly on a 24-bit rounding tie, where a plane set
+    up from each triangle's own first corner rounds either way (1 pixel in 13 here)."""
+    tri = [(7, 24, 1.0), (21, 9, 0.0), (14, 14, 0.5)]
+    other = [tri[i] for i in order]
+    depth, tri_index, _, _ = raster([tri, other], 24, 24)
+    assert set(np.unique(tri_index).tolist()) == {-1, 1}
+    alone = raster([other], 24, 24)[0]
+    assert (depth == alone).all()
+
+
 def test_depths_equal_after_24_bit_rounding_count_as_equal():
     """Depths 0.5 and 0.5 + 1e−9 round to the same 24-bit value, so the later (slightly farther) triangle still wins."""
     _, tri_index, _, _ = raster([[(0, 0, 0.5), (6, 0, 0.5), (0, 6, 0.5)], [(0, 0, 0.5 + 1e-9), (6, 0, 0.5 + 1e-9),
