@@ -1,11 +1,16 @@
-"""Stage 4, clip space → clip space: triangles cut at the near and far planes.
+"""Stage 4, clip space → clip space: triangles cut to the view volume.
 
-A point (x, y, z, w) in OpenGL clip space is kept when −w ≤ z ≤ w (near, far). Clipping
-happens *before* the division by w, in homogeneous coordinates, so a triangle that
-crosses the near plane keeps the part in front of the eye and nothing behind the eye can
-appear (the course's reason for clipping in 4D). The x and y planes are clipped only at a
-wide guard band (|x|, |y| ≤ GUARD·w) that keeps window coordinates small enough for exact
-fixed-point rasterisation; inside the viewport that changes no pixel.
+A point (x, y, z, w) in OpenGL clip space is inside the view volume when −w ≤ x ≤ w,
+−w ≤ y ≤ w and −w ≤ z ≤ w. Clipping happens *before* the division by w, in homogeneous
+coordinates, so a triangle that crosses the near plane keeps the part in front of the
+eye and nothing behind the eye can appear (the course's reason for clipping in 4D).
+
+The x and y planes are the viewport's edges, as in the course and as in llvmpipe (Mesa's
+software rasteriser clips "with no guardband"). It matters for one reason: the new
+corners on the border are snapped to the 1/256-pixel grid (:mod:`renderer.window`) like
+any corner, which moves a cut edge by up to 1/512 pixel, and llvmpipe moves it the same
+way. A pixel centre exactly on such an edge can change sides (a wide guard band instead
+left it to the top-left rule, and VTK then drew one pixel we did not).
 
 Each output vertex carries its barycentric weights with respect to the *source*
 triangle, so later stages interpolate the source's attributes (Sutherland–Hodgman
@@ -18,7 +23,6 @@ from numba import njit
 
 from renderer.workspace import empty
 
-GUARD = 8.0
 N_PLANES = 6
 MAX_POLY = 3 + N_PLANES  # each plane adds at most one vertex to a convex polygon
 
@@ -27,7 +31,8 @@ MAX_POLY = 3 + N_PLANES  # each plane adds at most one vertex to a convex polygo
 def plane_distance(v, plane):
     """Signed distance-like value of clip-space vertex ``v`` to a plane; ≥ 0 is inside.
 
-    Planes: 0 near z ≥ −w, 1 far z ≤ w, 2..5 the guard band on x and y.
+    Planes: 0 near z ≥ −w, 1 far z ≤ w, 2 right x ≤ w, 3 left x ≥ −w, 4 top y ≤ w,
+    5 bottom y ≥ −w.
     """
     x, y, z, w = v[0], v[1], v[2], v[3]
     if plane == 0:
@@ -35,12 +40,12 @@ def plane_distance(v, plane):
     if plane == 1:
         return w - z
     if plane == 2:
-        return GUARD * w - x
+        return w - x
     if plane == 3:
-        return GUARD * w + x
+        return w + x
     if plane == 4:
-        return GUARD * w - y
-    return GUARD * w + y
+        return w - y
+    return w + y
 
 
 @njit(cache=True)

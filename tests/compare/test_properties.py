@@ -27,13 +27,13 @@ def test_coverage_matches_vtk(scene):
     assert m["coverage_mismatch"] <= PARITY_BARS["coverage_mismatch"], m
 
 
-def test_known_difference_an_edge_through_a_pixel_centre_past_the_viewport():
-    """Found by the thorough profile, not fixed: a thin triangle with corners on pixel
-    centres (0, 0), (1, −4), (−1, 6) — in pixels, y up, 16×16 — has pixel centre (0, 1)
-    exactly on its right edge. We leave it out (top-left rule), and so does VTK when the
-    same triangle is moved whole pixels into the image; where it pokes out past the left
-    border, llvmpipe draws that pixel. Its handling of triangles crossing the viewport
-    edge is not modelled yet, so the two differ by that one pixel."""
+def test_a_cut_edge_through_a_pixel_centre_moves_as_llvmpipe_moves_it():
+    """Found by the thorough profile. A thin triangle with corners on pixel centres (0, 0),
+    (1, −4), (−1, 6) — in pixels, y up, 16×16 — has pixel centre (0, 1) exactly on its right
+    edge. Inside the image (moved by whole pixels) the top-left rule leaves it out. Poking
+    out past the border, the triangle is cut at the viewport and the new corners are
+    snapped to 1/256 pixel, which moves the cut edge just past that centre: llvmpipe (no
+    guard band) then draws it, and so do we, since we cut at the viewport too."""
     import numpy as np
 
     from lab.mesh import Mesh
@@ -49,7 +49,6 @@ def test_known_difference_an_edge_through_a_pixel_centre_past_the_viewport():
         return render(scene).coverage[::-1], render_reference(scene).coverage[::-1]  # window rows, y up
 
     ours, vtk = coverage((4, 5))
-    assert (ours == vtk).all() and ours[5, 4] and not ours[6, 4]  # inside the image: the same pixels
+    assert (ours == vtk).all() and ours[5, 4] and not ours[6, 4]  # inside the image: the top-left rule
     ours, vtk = coverage((0, 0))
-    assert ours[0, 0] and not ours[1, 0]
-    assert vtk[1, 0]  # llvmpipe's extra pixel at the viewport's edge
+    assert (ours == vtk).all() and ours[0, 0] and ours[1, 0]  # cut at the border: the centre is in

@@ -1,4 +1,4 @@
-"""Stage 4, clipping in homogeneous clip space: −w ≤ z ≤ w, nothing behind the eye, weights back to the source."""
+"""Stage 4, clipping in homogeneous clip space: −w ≤ x, y, z ≤ w, nothing behind the eye, weights back to the source."""
 import numpy as np
 import pytest
 
@@ -57,10 +57,21 @@ def test_one_vertex_past_the_near_plane_leaves_a_quad():
 
 def test_two_vertices_past_the_near_plane_leave_one_triangle():
     """Two vertices nearer than the near plane: one smaller triangle, every vertex with z ≥ −w."""
-    clip, (out, bary, source) = clip_view([(0, 0, -0.5), (1, 0, -0.5), (0, 1, -3)])
+    clip, (out, bary, source) = clip_view([(0, 0, -0.5), (0.3, 0, -0.5), (0, 0.3, -3)])
     assert len(out) == 1
     assert np.all(out[..., 2] + out[..., 3] >= -EPS)
     assert sorted(np.round(out[0, :, 3], 12).tolist()) == [NEAR, NEAR, 3.0]
+    assert_weights_reproduce_sources(clip, out, bary, source)
+
+
+def test_a_triangle_across_the_viewport_edge_is_cut_at_the_edge():
+    """The x and y planes are the viewport's edges (no guard band): a triangle poking out to
+    the right keeps the part with x ≤ w, and its new corners lie on x = w exactly."""
+    clip, (out, bary, source) = clip_view([(0, 0, -2), (5, 0, -2), (0, 0.5, -2)])
+    assert len(out) >= 1 and set(source.tolist()) == {0}
+    assert np.all(out[..., 3] - out[..., 0] >= -EPS)
+    on_edge = np.isclose(out[..., 0], out[..., 3], atol=1e-12)
+    assert len({tuple(np.round(v, 12)) for v in out[on_edge]}) == 2
     assert_weights_reproduce_sources(clip, out, bary, source)
 
 
@@ -143,7 +154,7 @@ def test_output_keeps_source_order_and_winding():
 
 @pytest.mark.parametrize("seed", range(5))
 def test_random_triangles_clip_into_the_visible_volume(seed):
-    """Random triangles anywhere around the eye: every surviving vertex is inside −w ≤ z ≤ w, w > 0, with exact weights."""
+    """Random triangles anywhere around the eye: every surviving vertex is inside −w ≤ x, y, z ≤ w, w > 0, with exact weights."""
     rng = np.random.default_rng(seed)
     anywhere = rng.uniform(-15, 15, (40, 3, 3))
     in_view = np.concatenate([rng.uniform(-2, 2, (10, 3, 2)), rng.uniform(-9.5, -1.5, (10, 3, 1))], axis=2)
@@ -152,10 +163,11 @@ def test_random_triangles_clip_into_the_visible_volume(seed):
     assert np.all(out[..., 2] + out[..., 3] >= -1e-9)
     assert np.all(out[..., 3] - out[..., 2] >= -1e-9)
     assert np.all(out[..., 3] > 0)
+    assert np.all(out[..., 3] - np.abs(out[..., :2]).max(axis=-1) >= -1e-9)
     assert_weights_reproduce_sources(clip, out, bary, source)
     # a triangle entirely inside is passed through whole
     x, y, z, w = np.moveaxis(clip, 2, 0)
-    inside = np.all((z >= -w) & (z <= w) & (np.abs(x) <= 8 * w) & (np.abs(y) <= 8 * w), axis=1)
+    inside = np.all((z >= -w) & (z <= w) & (np.abs(x) <= w) & (np.abs(y) <= w), axis=1)
     assert inside.any() and not inside.all()
     for t in np.flatnonzero(inside):
         assert (source == t).sum() == 1

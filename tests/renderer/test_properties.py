@@ -15,7 +15,12 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import renderer.pipeline
+from lab.mesh import Mesh
+from lab.scene import Material
 from renderer import render
+from renderer.camera import clipping_range, view_to_clip, world_to_view
+from renderer.pipeline import transform_scene
+from renderer.raster import DEPTH_MAX
 from renderer.shading import to_8bit
 from renderer.workspace import Workspace
 
@@ -88,11 +93,58 @@ def crops(draw):
     return dataclasses.replace(scene, camera=cam), draw(st.integers(1, 9)), draw(st.integers(1, 9))
 
 
+def triangle_ids(scene):
+    """The scene with every triangle its own unlit object whose colour is its number
+    (k + 1 in base 255 over R, G, B), drawn in the same order: its image says which
+    triangle is visible at each pixel."""
+    objects = []
+    for obj in scene.objects:
+        for tri in obj.mesh.triangles:
+            k = len(objects) + 1
+            colour = tuple(((k // 255 ** c) % 255) / 255.0 for c in range(3))
+            objects.append(dataclasses.replace(obj, mesh=Mesh(obj.mesh.points, tri[None]), texture=None,
+                                               material=Material(color=colour, ambient=0.0, diffuse=1.0,
+                                                                 lighting=False)))
+    return dataclasses.replace(scene, objects=tuple(objects))
+
+
+def edge_distance(scene, pixels):
+    """For each pixel (image row, column) in ``pixels`` (M, 2), the distance in pixels
+    from its centre to the nearest line through a projected triangle edge. Lines are
+    joins of homogeneous window points (X, Y, W), so a corner behind the eye still gives
+    the right line."""
+    width, height = scene.image.size
+    cam = scene.camera
+    geo = transform_scene(scene, world_to_view(cam),
+                          view_to_clip(cam, width / height, clipping_range(cam, scene.world_bounds())))
+    c = geo.verts_clip
+    p = np.column_stack([(c[:, 0] + c[:, 3]) * width / 2, (c[:, 1] + c[:, 3]) * height / 2, c[:, 3]])
+    t = geo.triangles
+    lines = np.cross(p[t], p[t[:, [1, 2, 0]]]).reshape(-1, 3)
+    norm = np.hypot(lines[:, 0], lines[:, 1])
+    lines = lines[norm > 0] / norm[norm > 0, None]
+    x = pixels[:, 1] + 0.5
+    y = height - 1 - pixels[:, 0] + 0.5  # window rows are y up
+    return np.abs(x[:, None] * lines[:, 0] + y[:, None] * lines[:, 1] + lines[:, 2]).min(axis=1, initial=np.inf)
+
+
 @given(crops())
 def test_a_larger_image_contains_the_smaller_one(case):
     """With the pixel size kept (parallel projection, the scale grown with the height), an
     image 2a wider and 2b taller holds the smaller image, pixel for pixel, a and b in:
-    nothing is lost or added at the image's edges, and nothing drawn spills over them."""
+    nothing is lost or added at the image's edges, and nothing drawn spills over them.
+
+    Where the two differ, it is for one of two reasons, and the test checks which:
+
+    - a pixel centre within 1/256 pixel of a triangle's edge: a triangle cut at the
+      border gets new corners snapped to the 1/256 grid, which moves the cut edge by up
+      to 1/512 pixel (as llvmpipe does; :mod:`renderer.clip`), and the larger image cuts
+      it elsewhere or not at all. Coverage, or which triangle shows, may then differ;
+    - a depth tie (a shared edge of two intersecting triangles, coincident ones): the
+      z-buffer's winner rests on the last bit of each depth, so either may show, and the
+      stored depths agree within two 24-bit steps.
+
+    Wherever the same triangle shows in both, colours agree within 1."""
     scene, a, b = case
     width, height = scene.image.size
     cam = scene.camera
@@ -106,9 +158,14 @@ def test_a_larger_image_contains_the_smaller_one(case):
                                                          / height))
     fs, fb = render(small), render(big)
     inner = (slice(b, b + height), slice(a, a + width))
-    mismatch = fs.coverage != fb.coverage[inner]
-    assert mismatch.sum() == 0, np.argwhere(mismatch)[:5]
-    assert np.abs(fs.rgb.astype(int) - fb.rgb[inner]).max(initial=0) <= 1
+    same = (render(triangle_ids(small)).rgb == render(triangle_ids(big)).rgb[inner]).all(axis=-1)
+    assert np.abs(fs.rgb.astype(int) - fb.rgb[inner])[same].max(initial=0) <= 1
+    differ = np.argwhere(~same)  # another triangle, or background on one side only
+    near_edge = edge_distance(small, differ) < 1 / 256
+    covered = fs.coverage & fb.coverage[inner]
+    tie = covered & (np.abs(fs.depth - fb.depth[inner]) <= 2 / DEPTH_MAX)
+    unexplained = differ[~near_edge & ~tie[tuple(differ.T)]]
+    assert len(unexplained) == 0, unexplained[:5]
 
 
 # ------------------------------------------------------------------ determinism
