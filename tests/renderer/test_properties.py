@@ -110,17 +110,26 @@ def triangle_ids(scene):
 
 def edge_distance(scene, pixels):
     """For each pixel (image row, column) in ``pixels`` (M, 2), the distance in pixels
-    from its centre to the nearest line through a projected triangle edge. Lines are
-    joins of homogeneous window points (X, Y, W), so a corner behind the eye still gives
-    the right line."""
+    from its centre to the nearest line a triangle's edge may lie on: the projected edges,
+    and the lines where the triangle is cut by the near and far planes. Lines are joins of
+    homogeneous window points (X, Y, W), so a corner behind the eye still gives the
+    right line."""
     width, height = scene.image.size
     cam = scene.camera
     geo = transform_scene(scene, world_to_view(cam),
                           view_to_clip(cam, width / height, clipping_range(cam, scene.world_bounds())))
-    c = geo.verts_clip
-    p = np.column_stack([(c[:, 0] + c[:, 3]) * width / 2, (c[:, 1] + c[:, 3]) * height / 2, c[:, 3]])
-    t = geo.triangles
-    lines = np.cross(p[t], p[t[:, [1, 2, 0]]]).reshape(-1, 3)
+    c = geo.verts_clip[geo.triangles]  # (T, 3, 4)
+    p = np.stack([(c[..., 0] + c[..., 3]) * width / 2, (c[..., 1] + c[..., 3]) * height / 2, c[..., 3]], axis=-1)
+    nxt = [1, 2, 0]
+    lines = [np.cross(p, p[:, nxt]).reshape(-1, 3)]
+    for d in (c[..., 2] + c[..., 3], c[..., 3] - c[..., 2]):  # near, far: ≥ 0 inside
+        cross = (d > 0) != (d[:, nxt] > 0)
+        t = np.where(cross, d / np.where(cross, d - d[:, nxt], 1.0), 0.0)
+        q = p + t[..., None] * (p[:, nxt] - p)  # where each edge meets the plane (rows with cross)
+        for i, j in ((0, 1), (1, 2), (0, 2)):
+            both = cross[:, i] & cross[:, j]
+            lines.append(np.cross(q[both, i], q[both, j]))
+    lines = np.concatenate(lines)
     norm = np.hypot(lines[:, 0], lines[:, 1])
     lines = lines[norm > 0] / norm[norm > 0, None]
     x = pixels[:, 1] + 0.5
@@ -136,16 +145,17 @@ def test_a_larger_image_contains_the_smaller_one(case):
 
     Where the two differ, it is for one of three reasons, and the test checks which:
 
-    - a pixel centre within 1/256 pixel of a triangle's edge: a triangle cut at the
-      border gets new corners snapped to the 1/256 grid, which moves the cut edge by up
-      to 1/512 pixel (as llvmpipe does; :mod:`renderer.clip`), and the larger image cuts
-      it elsewhere or not at all. Coverage, or which triangle shows, may then differ;
+    - a pixel centre within 1/256 pixel of a triangle's edge, or of the line where the
+      near or far plane cuts it: a triangle cut at the border gets new corners snapped
+      to the 1/256 grid, which moves its edges there by up to 1/512 pixel (as llvmpipe
+      does; :mod:`renderer.clip`), and the larger image cuts it elsewhere or not at all.
+      Coverage, or which triangle shows, may then differ;
     - a depth tie (a shared edge of two intersecting triangles, coincident ones): the
       z-buffer's winner rests on the last bit of each depth, so either may show, and the
       stored depths agree within two 24-bit steps;
-    - a surface on the near or far plane (a fitted clipping range touches the scene's
-      bounds): where it is cut rests on the last bit, and what shows has a depth within
-      two 24-bit steps of 0 or 1.
+    - a surface lying on the near or far plane (a fitted clipping range touches the
+      scene's bounds): whether it is kept rests on the last bit, and what shows has a
+      depth within two 24-bit steps of 0 or 1.
 
     Wherever the same triangle shows in both, colours agree within 1."""
     scene, a, b = case
