@@ -24,7 +24,7 @@ Rules, each in one place:
 
 Determinism: every pixel sees the triangles in the order given (objects in scene order,
 triangles in mesh order), as OpenGL guarantees, so ties resolve the same way every run.
-Parallelism splits the image into bands of rows, never the triangle order (see
+Parallelism deals the image's rows out to bands, never splits the triangle order (see
 :func:`rasterize`), and gives the same bytes as one thread.
 """
 from __future__ import annotations
@@ -179,31 +179,34 @@ def fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary
             bary[row, col, 1] = l2
 
 
+@njit(cache=True, inline="always")
+def first_row_of_band(lo, b, n_bands):
+    """The first row ≥ ``lo`` that band ``b`` owns: bands take rows like cards, row r to band r mod n_bands."""
+    return lo + (b - lo) % n_bands
+
+
 @njit(cache=True, parallel=True)
 def rasterize(ccw, rows, plane, width, height, n_bands, rule, depth_test, depth, tri_index, bary):
     """Scan-convert every triangle into the visibility buffer (the loop kernel).
 
-    The image is cut into ``n_bands`` bands of whole rows, filled in parallel; each band
-    clears its rows and then draws *every* triangle in order, clipped to its rows. A
-    pixel belongs to one band and sees the triangles in draw order, so the result is the
-    same, bit for bit, as a serial loop (z-buffer ties included). ``depth_test`` False
+    The image's rows are dealt out to ``n_bands`` bands like cards (row r to band
+    r mod n_bands, so every band gets rows from all over the image and the threads share
+    the work evenly), filled in parallel; each band clears its rows and then draws *every*
+    triangle in order, on its own rows only. A pixel belongs to one band and sees the
+    triangles in draw order, so the result is the same, bit for bit, as a serial loop
+    (z-buffer ties included). ``depth_test`` False
     draws every fragment over what is there (the painter's algorithm, or no hidden-surface
     removal at all): then the last triangle drawn wins.
     depth (H, W) float, tri_index (H, W) int64 (−1 = empty), bary (H, W, 2): outputs, in
     window rows (y up); bary holds the screen-space weights of vertices 1 and 2.
     """
-    band = (height + n_bands - 1) // n_bands
     for b in prange(n_bands):
-        r0 = b * band
-        r1 = min(height, r0 + band) - 1
-        for row in range(r0, r1 + 1):
+        for row in range(b, height, n_bands):
             for col in range(width):
                 depth[row, col] = 1.0
                 tri_index[row, col] = -1
         for k in range(ccw.shape[0]):
-            lo = max(rows[k, 0], r0)
-            hi = min(rows[k, 1], r1)
-            for row in range(lo, hi + 1):
+            for row in range(first_row_of_band(rows[k, 0], b, n_bands), rows[k, 1] + 1, n_bands):
                 fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary)
 
 

@@ -87,6 +87,12 @@ def plane_normal(a, b, c, n):
         n[0], n[1], n[2] = n[0] / length, n[1] / length, n[2] / length
 
 
+ROW_DECKS = 64
+"""Parallel loops over rows deal them out like cards: row r goes to deck r mod 64, and the
+decks are shared among the threads. Every thread then gets rows from all over the image;
+in contiguous blocks, a floor filling the lower half landed on one thread and the sky on
+the other (measured: 1 thread 12.7 ms, 2 threads 11.5 ms on ``near-plane``)."""
+
 # How an object is shaded (ObjectTable.kind), chosen once per object in renderer.pipeline.
 VTK_FLAT, VTK_SMOOTH, FACE_COLOUR, VERTEX_COLOUR, TEXTBOOK_PIXEL = 0, 1, 2, 3, 4
 
@@ -217,24 +223,27 @@ def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, p
     """Colour every covered pixel and store 8-bit RGB (the loop kernel).
 
     Each covered pixel gets :func:`fragment_colour` of its visible fragment.
-    Rows are independent and each pixel is written once, so ``prange`` over rows gives
-    the same bytes as a serial loop. ``background`` is the 8-bit clear colour.
+    Rows are independent and each pixel is written once, so a parallel loop gives the
+    same bytes as a serial one. Rows are dealt out like cards (:data:`ROW_DECKS`).
+    ``background`` is the 8-bit clear colour.
     """
     height, width = frags.tri_index.shape
-    for row in prange(height):
+    n_decks = min(height, ROW_DECKS)
+    for deck in prange(n_decks):
         w = np.empty(3)
         n = np.empty(3)
         p = np.empty(3)
         out = np.empty(3)
         tex = np.empty(3)
         spec = np.empty(3)
-        for col in range(width):
-            k = frags.tri_index[row, col]
-            if k < 0:
+        for row in range(deck, height, n_decks):
+            for col in range(width):
+                k = frags.tri_index[row, col]
+                if k < 0:
+                    for c in range(3):
+                        rgb[row, col, c] = background[c]
+                    continue
+                fragment_colour(frags, k, frags.bary[row, col, 0], frags.bary[row, col, 1], geo, objs, lights,
+                                vert_colour, face_colour, parallel_camera, perspective, w, n, p, tex, spec, out)
                 for c in range(3):
-                    rgb[row, col, c] = background[c]
-                continue
-            fragment_colour(frags, k, frags.bary[row, col, 0], frags.bary[row, col, 1], geo, objs, lights,
-                            vert_colour, face_colour, parallel_camera, perspective, w, n, p, tex, spec, out)
-            for c in range(3):
-                rgb[row, col, c] = unorm8(out[c])
+                    rgb[row, col, c] = unorm8(out[c])

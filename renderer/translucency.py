@@ -38,8 +38,8 @@ import numba
 import numpy as np
 from numba import njit, prange
 
-from renderer.raster import FILL_RULES, pixel_fragment, row_span, set_up
-from renderer.shading import Fragments, fragment_colour, unorm8
+from renderer.raster import FILL_RULES, first_row_of_band, pixel_fragment, row_span, set_up
+from renderer.shading import ROW_DECKS, Fragments, fragment_colour, unorm8
 
 OIT, DEPTH_PEELING, SORTED = 0, 1, 2
 MODES = {"oit": OIT, "depth_peeling": DEPTH_PEELING, "sorted": SORTED}
@@ -53,20 +53,17 @@ def collect_fragments(ccw, rows, plane, width, height, n_bands, rule, depth_test
     ``fill`` False: only ``count`` (H, W) the fragments of every pixel. ``fill`` True:
     also write fragment ``j`` of pixel (row, col) at ``start[row, col] + j`` of
     ``frag_tri`` (clipped triangle), ``frag_bary`` (screen-space weights of vertices 1
-    and 2) and ``frag_z`` (24-bit window depth). Bands of rows in parallel, each drawing
+    and 2) and ``frag_z`` (24-bit window depth). Bands of rows dealt like cards, in parallel, each drawing
     every triangle in order (as :func:`renderer.raster.rasterize`), so each list is in
     draw order. A fragment is kept where ``z <= opaque_depth`` (or always, without
     ``depth_test``).
     """
-    band = (height + n_bands - 1) // n_bands
     for b in prange(n_bands):
-        r0 = b * band
-        r1 = min(height, r0 + band) - 1
-        for row in range(r0, r1 + 1):
+        for row in range(b, height, n_bands):
             for col in range(width):
                 count[row, col] = 0
         for k in range(ccw.shape[0]):
-            for row in range(max(rows[k, 0], r0), min(rows[k, 1], r1) + 1):
+            for row in range(first_row_of_band(rows[k, 0], b, n_bands), rows[k, 1] + 1, n_bands):
                 first, last = row_span(k, row, ccw, width, rule)
                 for col in range(first, last + 1):
                     l1, l2, z = pixel_fragment(k, row, col, plane)
@@ -230,10 +227,12 @@ def shade_translucent(frags, start, count, frag_tri, frag_bary, frag_z, max_coun
     ``frags`` holds the translucent clipped triangles' tables (its tri_index and bary are
     not read); ``opacity`` (O,) per object; ``opaque_depth`` (H, W) the opaque z-buffer
     (1.0 where empty); ``rgb`` (H, W, 3) uint8 holds the opaque result and receives the
-    composite. Rows are independent.
+    composite. Rows are independent, dealt out like cards
+    (:data:`renderer.shading.ROW_DECKS`).
     """
     height, width = count.shape
-    for row in prange(height):
+    n_decks = min(height, ROW_DECKS)
+    for deck in prange(n_decks):
         w = np.empty(3)
         n = np.empty(3)
         p = np.empty(3)
@@ -249,25 +248,26 @@ def shade_translucent(frags, start, count, frag_tri, frag_bary, frag_z, max_coun
         alpha = np.empty(max_count)
         z = np.empty(max_count)
         order = np.empty(max_count, np.int64)
-        for col in range(width):
-            m = count[row, col]
-            if m == 0:
-                continue
-            for j in range(m):
-                i = start[row, col] + j
-                k = frag_tri[i]
-                fragment_colour(frags, k, frag_bary[i, 0], frag_bary[i, 1], geo, objs, lights, vert_colour,
-                                face_colour, parallel_camera, perspective, w, n, p, tex, spec, lit)
+        for row in range(deck, height, n_decks):
+            for col in range(width):
+                m = count[row, col]
+                if m == 0:
+                    continue
+                for j in range(m):
+                    i = start[row, col] + j
+                    k = frag_tri[i]
+                    fragment_colour(frags, k, frag_bary[i, 0], frag_bary[i, 1], geo, objs, lights, vert_colour,
+                                    face_colour, parallel_camera, perspective, w, n, p, tex, spec, lit)
+                    for c in range(3):
+                        colours[j, c] = lit[c]
+                    alpha[j] = opacity[geo.tri_object[frags.clip_source[k]]]
+                    z[j] = frag_z[i]
                 for c in range(3):
-                    colours[j, c] = lit[c]
-                alpha[j] = opacity[geo.tri_object[frags.clip_source[k]]]
-                z[j] = frag_z[i]
-            for c in range(3):
-                behind[c] = rgb[row, col, c]
-            composite_pixel(mode, colours, alpha, z, m, behind, opaque_depth[row, col] < 1.0, out, order, acc, front,
-                            back)
-            for c in range(3):
-                rgb[row, col, c] = out[c]
+                    behind[c] = rgb[row, col, c]
+                composite_pixel(mode, colours, alpha, z, m, behind, opaque_depth[row, col] < 1.0, out, order, acc,
+                                front, back)
+                for c in range(3):
+                    rgb[row, col, c] = out[c]
 
 
 def fragment_lists(tri_fixed, tri_window, width, height, opaque_depth, fill_rule="top-left", depth_test=True,
