@@ -137,9 +137,10 @@ def vtk_lighting(n, p, complexity, amb, dif, spe, power, lights, out):
         for c in range(3):
             out[c] = amb[c] + dif[c]
         return
+    shiny = spe[0] != 0.0 or spe[1] != 0.0 or spe[2] != 0.0  # else Ks·Cs·sf is 0 whatever sf: skip the power
     if complexity == HEADLIGHT_ONLY:
         df = max(1e-6, n[2])
-        sf = df ** power
+        sf = df ** power if shiny else 0.0
         for c in range(3):
             out[c] = amb[c] + df * dif[c] * l_col[0, c] + sf * spe[c] * l_col[0, c]
         return
@@ -160,7 +161,7 @@ def vtk_lighting(n, p, complexity, amb, dif, spe, power, lights, out):
                 att = att * cd ** l_exponent[i] if cd >= l_cos_cone[i] else 0.0
         df = max(0.0, -att * (n[0] * lx + n[1] * ly + n[2] * lz))
         if df > 0.0:
-            sf = att * max(1e-5, reflect_dot(lx, ly, lz, n, vx, vy, vz)) ** power
+            sf = att * max(1e-5, reflect_dot(lx, ly, lz, n, vx, vy, vz)) ** power if shiny else 0.0
             d0 += df * l_col[i, 0]
             d1 += df * l_col[i, 1]
             d2 += df * l_col[i, 2]

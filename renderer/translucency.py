@@ -40,6 +40,7 @@ from numba import njit, prange
 
 from renderer.raster import FILL_RULES, first_row_of_band, pixel_fragment, row_span, set_up
 from renderer.shading import ROW_DECKS, Fragments, fragment_colour, unorm8
+from renderer.workspace import empty
 
 OIT, DEPTH_PEELING, SORTED = 0, 1, 2
 MODES = {"oit": OIT, "depth_peeling": DEPTH_PEELING, "sorted": SORTED}
@@ -284,14 +285,18 @@ def fragment_lists(tri_fixed, tri_window, width, height, opaque_depth, fill_rule
     n_bands = max(1, min(int(n_bands), height))
     front, ccw, rows, plane = set_up(tri_fixed, tri_window, height, cull_back, ws, "translucency")
     rule = FILL_RULES[fill_rule]
-    count = np.empty((height, width), np.int64)
-    start = np.zeros((height, width), np.int64)
+    count = empty(ws, "translucency.count", (height, width), np.int64)
+    start = empty(ws, "translucency.start", (height, width), np.int64)
     none_i, none_b, none_z = np.empty(0, np.int64), np.empty((0, 2)), np.empty(0)
     collect_fragments(ccw, rows, plane, width, height, n_bands, rule, bool(depth_test), opaque_depth, False, count,
                       start, none_i, none_b, none_z)
-    start.reshape(-1)[1:] = np.cumsum(count.reshape(-1))[:-1]
-    total = int(count.sum())
-    frag_tri, frag_bary, frag_z = np.empty(total, np.int64), np.empty((total, 2)), np.empty(total)
+    flat = start.reshape(-1)
+    flat[0] = 0
+    np.cumsum(count.reshape(-1)[:-1], out=flat[1:])
+    total = int(flat[-1] + count[-1, -1])
+    frag_tri = empty(ws, "translucency.frag_tri", total, np.int64)
+    frag_bary = empty(ws, "translucency.frag_bary", (total, 2))
+    frag_z = empty(ws, "translucency.frag_z", total)
     collect_fragments(ccw, rows, plane, width, height, n_bands, rule, bool(depth_test), opaque_depth, True, count,
                       start, frag_tri, frag_bary, frag_z)
     return front, count, start, frag_tri, frag_bary, frag_z
