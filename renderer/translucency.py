@@ -81,16 +81,26 @@ def collect_fragments(ccw, rows, plane, width, height, n_bands, rule, depth_test
 F32_ONE = np.float32(1.0)
 
 
+HALF_MIN_NORMAL = 2.0 ** -14
+HALF_SUBNORMAL_STEP = 2.0 ** 24  # 1 / the fixed step below HALF_MIN_NORMAL
+SIGN_BIT = np.int64(-(1 << 31))  # float32's sign bit, as the int32 pattern sees it (sign-extended)
+
+
 @njit(cache=True, inline="always")
 def half(x):
-    """``x`` rounded to the nearest IEEE half float (ties to even), as a float32 — what a
-    16-bit float render target stores. Normal halves keep 11 significant bits; below
-    2⁻¹⁴ the step is a fixed 2⁻²⁴ (subnormals). No overflow handling: values here stay ≤ 1e3."""
-    if x == 0.0:
-        return np.float32(0.0)
-    m, e = math.frexp(x)  # x = m·2^e, 0.5 ≤ |m| < 1
-    step = math.ldexp(1.0, max(e - 11, -24))
-    return np.float32(np.rint(x / step) * step)
+    """``x`` (a float32 value) rounded to the nearest IEEE half float, ties to even, as a
+    float32 — what a 16-bit float render target stores. Normal halves keep 11 of float32's
+    24 significant bits: the low 13 bits of its pattern are rounded off, ties to even.
+    Below 2⁻¹⁴ the step is a fixed 2⁻²⁴ (subnormals). No overflow handling: values here
+    stay ≤ 1e3."""
+    f = np.float32(x)
+    if abs(f) < HALF_MIN_NORMAL:
+        return np.float32(np.rint(f * HALF_SUBNORMAL_STEP) / HALF_SUBNORMAL_STEP)
+    bits = np.int64(f.view(np.int32))
+    sign = bits & SIGN_BIT
+    magnitude = bits & ~SIGN_BIT
+    magnitude = (magnitude + 0x0FFF + ((magnitude >> 13) & 1)) & ~0x1FFF
+    return np.int32(sign | magnitude).view(np.float32)
 
 
 @njit(cache=True, inline="always")

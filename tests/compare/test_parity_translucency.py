@@ -69,7 +69,11 @@ def test_red_over_green_on_blue(mode, expected, draw_order):
 def test_half_rounds_as_a_16_bit_float_target():
     """The OIT accumulators' rounding is IEEE half precision, ties to even."""
     rng = np.random.default_rng(5)
-    values = np.concatenate([rng.random(2000) * 4, rng.random(500) * 1e-4, [0.0, 1.0, 2049 / 2048, 1e-7]])
+    halves = rng.random(3000).astype(np.float16).astype(np.float32)
+    ties = halves + np.spacing(halves.astype(np.float16)).astype(np.float32) / 2  # halfway to the next half
+    values = np.concatenate([rng.random(2000) * 4, rng.random(500) * 1e-4, rng.random(500) * 1e3, -rng.random(500),
+                             ties, [0.0, 1.0, 2049 / 2048, 1e-7, 2.0 ** -14, 2.0 ** -14 * (1 - 2.0 ** -11)]])
+    values = values.astype(np.float32)  # the kernels round float32 sums
     ours = np.array([half(v) for v in values])
     assert np.array_equal(ours, values.astype(np.float16).astype(np.float32))
 
