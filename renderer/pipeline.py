@@ -138,23 +138,34 @@ def object_table(scene, complexity: int) -> ObjectTable:
 
 def texture_table(scene):
     """All objects' textures in one flat (Σ H·W, 3) array, and per object: textured flag,
-    offset, width, height, filter and wrap codes (see :mod:`renderer.texture`)."""
+    offset, width, height, filter and wrap codes (see :mod:`renderer.texture`).
+
+    Only textured objects take rows (the kernels sample nothing for the others). With one
+    textured object the flat array is a view of its texels, not a copy: a 2048×1024 texture
+    copied every frame cost more than shading the frame."""
     textured, offset, width, height, filt, wrap, chunks = [], [], [], [], [], [], []
     start = 0
     for obj in scene.objects:
         t = obj.texture
         textured.append(t is not None)
         h, w = (t.texels.shape[:2]) if t is not None else (1, 1)
-        offset.append(start)
+        offset.append(start if t is not None else 0)
         width.append(w)
         height.append(h)
         filt.append(LINEAR if t is not None and t.filter == "linear" else NEAREST)
         wrap.append(CLAMP if t is not None and t.wrap == "clamp" else REPEAT)
-        chunks.append(t.texels.reshape(-1, 3) if t is not None else np.ones((1, 3)))
-        start += h * w
+        if t is not None:
+            chunks.append(t.texels.reshape(-1, 3))
+            start += h * w
+    if not chunks:
+        texels = np.ones((1, 3))
+    elif len(chunks) == 1:
+        texels = np.ascontiguousarray(chunks[0], dtype=np.float64)
+    else:
+        texels = np.ascontiguousarray(np.concatenate(chunks), dtype=np.float64)
     as_int = lambda v: np.array(v, np.int64)  # noqa: E731
     return (np.array(textured, np.bool_), as_int(offset), as_int(width), as_int(height), as_int(filt), as_int(wrap),
-            np.ascontiguousarray(np.concatenate(chunks)))
+            texels)
 
 
 def textbook_colours(geo: SceneGeometry, objs: ObjectTable, lights, ws=None):

@@ -58,3 +58,27 @@ def test_globe_and_textured_sphere_match_vtk(name, filt):
     scene = dataclasses.replace(scene, objects=(obj,))
     m = measure(render(scene), render_reference(scene))
     assert not failed_bars(m), m
+
+
+def test_objects_each_sample_their_own_texture():
+    """Three quads side by side — earth texture, none, a small checkerboard — drawn as one
+    scene: each textured object samples its own texels (they share one flat array, with
+    rows only for textured objects), against VTK within the bars."""
+    import dataclasses
+
+    from lab.texture import Texture
+
+    checker = np.indices((8, 8)).sum(axis=0) % 2
+    board = Texture(texels=np.stack([checker, 0.5 + 0 * checker, 1 - checker], axis=-1).astype(np.float64),
+                    filter="nearest", wrap="repeat", source="checkerboard")
+    base = tilted_quad("linear", "repeat").objects[0]
+    objects = []
+    for x, texture in ((-1.1, base.texture), (0.0, None), (1.1, board)):
+        m = model_matrix(scale=(0.5, 0.5, 0.5), rotate=(-60, 0, 0), translate=(x, 0, 0))
+        objects.append(dataclasses.replace(base, model_to_world=m, texture=texture))
+    scene = dataclasses.replace(tilted_quad("linear", "repeat"), objects=tuple(objects))
+    ours = render(scene)
+    m = measure(ours, render_reference(scene))
+    assert not failed_bars(m), m
+    colours = {tuple(c) for c in ours.rgb[ours.coverage][:, :3].reshape(-1, 3)}
+    assert len(colours) > 50  # the textures show (not one flat colour per quad)
