@@ -22,7 +22,7 @@ from renderer.lighting import UNLIT, view_lights
 from renderer.painter import painter_order
 from renderer.raster import rasterize_triangles
 from renderer.shading import (FACE_COLOUR, TEXTBOOK_PIXEL, VERTEX_COLOUR, VTK_FLAT, VTK_SMOOTH, Fragments,
-                               ObjectTable, shade, to_8bit)
+                               ObjectTable, face_normals, shade, to_8bit)
 from renderer.textbook_lighting import CLASSIC, OPENGL, light_faces, light_vertices
 from renderer.texture import CLAMP, LINEAR, NEAREST, REPEAT
 from renderer.translucency import draw_translucent
@@ -52,7 +52,8 @@ class SceneGeometry(NamedTuple):
     normals_view (N, 3) view-space vertex normals, unnormalised (zeros when the object has
     none); triangles (T, 3) indices into those rows; tri_object (T,) each triangle's
     object; vert_object (N,) each vertex's object; tcoords (N, 2) texture coordinates
-    (zeros when the object has none).
+    (zeros when the object has none); face_normals (T, 3) each triangle's unit view-space
+    plane normal, (v1 − v0) × (v2 − v0) normalised (zero when it has no area).
     """
 
     verts_view: np.ndarray
@@ -62,6 +63,7 @@ class SceneGeometry(NamedTuple):
     tri_object: np.ndarray
     vert_object: np.ndarray
     tcoords: np.ndarray
+    face_normals: np.ndarray
 
 
 def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray) -> SceneGeometry:
@@ -82,9 +84,11 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
         vert_owners.append(np.full(obj.mesh.n_points, i, np.int64))
         tcoords.append(obj.mesh.tcoords if obj.mesh.tcoords is not None else np.zeros((obj.mesh.n_points, 2)))
         offset += obj.mesh.n_points
-    return SceneGeometry(np.ascontiguousarray(np.concatenate(views)), np.concatenate(clips),
-                         np.concatenate(normals), np.concatenate(tris), np.concatenate(owners),
-                         np.concatenate(vert_owners), np.concatenate(tcoords))
+    verts_view, triangles = np.ascontiguousarray(np.concatenate(views)), np.concatenate(tris)
+    normals_face = np.empty((len(triangles), 3))
+    face_normals(verts_view, triangles, normals_face)
+    return SceneGeometry(verts_view, np.concatenate(clips), np.concatenate(normals), triangles,
+                         np.concatenate(owners), np.concatenate(vert_owners), np.concatenate(tcoords), normals_face)
 
 
 MODEL_CODES = {"vtk": 0, "opengl": OPENGL, "classic": CLASSIC}
