@@ -8,6 +8,7 @@ the image file's rows (file row 0 is the top) exactly once, here. Values are the
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -33,10 +34,16 @@ class Texture:
     wrap: str = "repeat"
     source: str = ""
 
+    @cached_property
+    def texels_8bit(self) -> np.ndarray:
+        """(H, W, 3) uint8 ``round(texel·255)``, row 0 at t = 0: what VTK uploads and both
+        renderers sample. Worked out once per texture."""
+        return np.ascontiguousarray(np.rint(self.texels * 255.0).astype(np.uint8))
+
     @property
     def image_rows(self) -> np.ndarray:
         """The texels as 8-bit image rows, row 0 at the top (what an image file holds)."""
-        return np.rint(self.texels[::-1] * 255.0).astype(np.uint8)
+        return self.texels_8bit[::-1]
 
 
 def load_texture(path, filter: str = "nearest", wrap: str = "repeat") -> Texture:

@@ -141,8 +141,9 @@ def object_table(scene, complexity: int) -> ObjectTable:
 
 
 def texture_table(scene):
-    """All objects' textures in one flat (Σ H·W, 3) array, and per object: textured flag,
-    offset, width, height, filter and wrap codes (see :mod:`renderer.texture`).
+    """All objects' textures in one flat (Σ H·W, 3) uint8 array (their ``texels_8bit``), and
+    per object: textured flag, offset, width, height, filter and wrap codes (see
+    :mod:`renderer.texture`).
 
     Only textured objects take rows (the kernels sample nothing for the others). With one
     textured object the flat array is a view of its texels, not a copy: a 2048×1024 texture
@@ -159,14 +160,12 @@ def texture_table(scene):
         filt.append(LINEAR if t is not None and t.filter == "linear" else NEAREST)
         wrap.append(CLAMP if t is not None and t.wrap == "clamp" else REPEAT)
         if t is not None:
-            chunks.append(t.texels.reshape(-1, 3))
+            chunks.append(t.texels_8bit.reshape(-1, 3))
             start += h * w
     if not chunks:
-        texels = np.ones((1, 3))
-    elif len(chunks) == 1:
-        texels = np.ascontiguousarray(chunks[0], dtype=np.float64)
+        texels = np.full((1, 3), 255, np.uint8)
     else:
-        texels = np.ascontiguousarray(np.concatenate(chunks), dtype=np.float64)
+        texels = chunks[0] if len(chunks) == 1 else np.concatenate(chunks)
     as_int = lambda v: np.array(v, np.int64)  # noqa: E731
     return (np.array(textured, np.bool_), as_int(offset), as_int(width), as_int(height), as_int(filt), as_int(wrap),
             texels)

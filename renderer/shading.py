@@ -130,7 +130,7 @@ class ObjectTable(NamedTuple):
     global_ambient, ambient_light (3,), local_viewer, separate_specular: from the scene's
     ``[render]``.
     textured, tex_offset, tex_width, tex_height, tex_filter, tex_wrap (O,) and texels
-    (Σ H·W, 3): the objects' textures (see :func:`renderer.pipeline.texture_table`).
+    (Σ H·W, 3) uint8: the objects' textures (see :func:`renderer.pipeline.texture_table`).
     """
 
     kind: np.ndarray

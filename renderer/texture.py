@@ -2,8 +2,9 @@
 
 Texture space: s to the right, t up, (0, 0) the bottom-left corner of the image, texel
 (i, j) covering [i/W, (i+1)/W] × [j/H, (j+1)/H] with its centre at ((i+0.5)/W, (j+0.5)/H).
-All of a scene's textures live in one flat array (``texels``, (Σ H·W, 3)), each object's
-starting at ``offset[o]``, rows from the bottom (see :mod:`lab.texture`).
+All of a scene's textures live in one flat uint8 array (``texels``, (Σ H·W, 3), the 8-bit
+values VTK uploads), each object's starting at ``offset[o]``, rows from the bottom (see
+:mod:`lab.texture`). Colours come out as value/255.
 
 - nearest: texel (⌊s·W⌋, ⌊t·H⌋);
 - linear: the four texels around (s·W − ½, t·H − ½), weighted bilinearly — in llvmpipe's
@@ -16,6 +17,8 @@ starting at ``offset[o]``, rows from the bottom (see :mod:`lab.texture`).
 from __future__ import annotations
 
 import math
+
+import numpy as np
 
 from numba import njit
 
@@ -43,7 +46,7 @@ def sample(texels, offset, width, height, filter_mode, wrap, s, t, out):
         i = wrap_index(int(math.floor(s * width)), width, wrap)
         j = wrap_index(int(math.floor(t * height)), height, wrap)
         for c in range(3):
-            out[c] = texel(texels, offset, width, i, j, c)
+            out[c] = texel(texels, offset, width, i, j, c) / 255.0
         return
     u = s * width - 0.5
     v = t * height - 0.5
@@ -56,10 +59,10 @@ def sample(texels, offset, width, height, filter_mode, wrap, s, t, out):
     j0 = wrap_index(int(j0f), height, wrap)
     j1 = wrap_index(int(j0f) + 1, height, wrap)
     for c in range(3):
-        t00 = int(round(texel(texels, offset, width, i0, j0, c) * 255.0))
-        t10 = int(round(texel(texels, offset, width, i1, j0, c) * 255.0))
-        t01 = int(round(texel(texels, offset, width, i0, j1, c) * 255.0))
-        t11 = int(round(texel(texels, offset, width, i1, j1, c) * 255.0))
+        t00 = np.int64(texel(texels, offset, width, i0, j0, c))
+        t10 = np.int64(texel(texels, offset, width, i1, j0, c))
+        t01 = np.int64(texel(texels, offset, width, i0, j1, c))
+        t11 = np.int64(texel(texels, offset, width, i1, j1, c))
         h0 = t00 + (((t10 - t00) * wa + 128) >> 8)
         h1 = t01 + (((t11 - t01) * wa + 128) >> 8)
         out[c] = (h0 + (((h1 - h0) * wb + 128) >> 8)) / 255.0

@@ -3,8 +3,8 @@ import numpy as np
 
 from renderer.texture import CLAMP, LINEAR, NEAREST, REPEAT, sample
 
-# a 2×2 texture, rows from the bottom: (0,0)=0, (1,0)=1/255·[10], (0,1)=…, (1,1)=…
-TEX = np.array([[10, 20, 30], [110, 120, 130], [210, 220, 230], [50, 60, 70]], dtype=np.float64) / 255.0
+# a 2×2 8-bit texture, rows from the bottom: texel (0,0) = [10, 20, 30], (1,0) = [110, 120, 130], …
+TEX = np.array([[10, 20, 30], [110, 120, 130], [210, 220, 230], [50, 60, 70]], dtype=np.uint8)
 
 
 def at(s, t, filt=NEAREST, wrap=REPEAT):
