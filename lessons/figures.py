@@ -2,7 +2,9 @@
 
 - ``interpolation.png``: Gouraud colours on a floor seen at a grazing angle, interpolated
   linearly in screen space (the course's scanline way) beside perspective-correct
-  interpolation (what GPUs and VTK do), with the ΔE2000 map between them.
+  interpolation (what GPUs and VTK do), with the ΔE2000 map between them. The floor is
+  clipped at the window first, as in the course's pipeline, and the new corners carry
+  their true colours: the error grows with the size of each clipped triangle on screen.
 - ``gouraud-vs-vtk.png``: the textbook's OpenGL Gouraud sphere beside VTK's per-pixel
   "Gouraud" with the nearest equivalent material: the difference sits on the highlights.
 - ``separate-specular.png``: a shiny textured sphere in OpenGL's single-colour mode (the
