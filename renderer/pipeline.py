@@ -181,8 +181,8 @@ def textbook_colours(geo: SceneGeometry, objs: ObjectTable, lights, ws=None):
                        objs.power, objs.global_ambient, objs.local_viewer, objs.separate_specular,
                        objs.ambient_light, lights, vert_colour)
     if (objs.kind == FACE_COLOUR).any():
-        light_faces(geo.verts_view, geo.triangles, geo.tri_object, objs.model, objs.amb, objs.dif, objs.spe,
-                    objs.power, objs.global_ambient, objs.local_viewer, objs.separate_specular,
+        light_faces(geo.verts_view, geo.triangles, geo.face_normals, geo.tri_object, objs.model, objs.amb, objs.dif,
+                    objs.spe, objs.power, objs.global_ambient, objs.local_viewer, objs.separate_specular,
                     objs.ambient_light, lights, face_colour)
     return vert_colour, face_colour
 

@@ -194,9 +194,9 @@ def rasterize(ccw, rows, plane, width, height, n_bands, rule, depth_test, depth,
     the work evenly), filled in parallel; each band clears its rows and then draws *every*
     triangle in order, on its own rows only. A pixel belongs to one band and sees the
     triangles in draw order, so the result is the same, bit for bit, as a serial loop
-    (z-buffer ties included). ``depth_test`` False
-    draws every fragment over what is there (the painter's algorithm, or no hidden-surface
-    removal at all): then the last triangle drawn wins.
+    (z-buffer ties included). ``depth_test`` False draws every fragment over what is there
+    (the painter's algorithm, or no hidden-surface removal at all): then the last triangle
+    drawn wins.
     depth (H, W) float, tri_index (H, W) int64 (−1 = empty), bary (H, W, 2): outputs, in
     window rows (y up); bary holds the screen-space weights of vertices 1 and 2.
     """

@@ -24,7 +24,7 @@ spot cone, weighted by ``(−L·direction)^exponent`` (zero outside). Results ar
 Every kernel writes a *primary* colour ``out`` and a *secondary* (specular) colour
 ``spec``; ``spec`` is zero except for the opengl model with separate specular.
 
-Material arrays follow :func:`renderer.pipeline.material_arrays`: for opengl
+Material arrays follow :func:`renderer.pipeline.object_table`: for opengl
 ``amb, dif, spe, power`` = Ma, Md, Ms, shininess; for classic ``Ka·O``, ``Kd·O``,
 ``Ks·(1, 1, 1)``, n.
 """
@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit, prange
 
 
@@ -126,8 +127,8 @@ def light_vertices(verts_view, normals_view, vert_object, obj_model, obj_amb, ob
                    global_ambient, local_viewer, separate, ambient_light, lights, colours):
     """Gouraud's first half: a lit colour per vertex (the loop kernel), normals normalised.
 
-    ``colours`` (N, 6): primary RGB, then secondary (specular) RGB. Only vertices of objects whose model is opengl or classic are lit; others keep
-    whatever ``colours`` held.
+    ``colours`` (N, 6): primary RGB, then secondary (specular) RGB. Only vertices of
+    objects whose model is opengl or classic are lit; others keep whatever ``colours`` held.
     """
     for v in prange(verts_view.shape[0]):
         o = vert_object[v]
@@ -143,24 +144,19 @@ def light_vertices(verts_view, normals_view, vert_object, obj_model, obj_amb, ob
 
 
 @njit(cache=True, parallel=True)
-def light_faces(verts_view, triangles, tri_object, obj_model, obj_amb, obj_dif, obj_spe, obj_power,
+def light_faces(verts_view, triangles, face_normals, tri_object, obj_model, obj_amb, obj_dif, obj_spe, obj_power,
                 global_ambient, local_viewer, separate, ambient_light, lights, colours):
-    """Flat shading's colour per triangle (the loop kernel): its plane normal
-    (v1 − v0) × (v2 − v0), lit at one representative point, the centroid. ``colours``
-    (T, 6): primary RGB, then secondary RGB."""
+    """Flat shading's colour per triangle (the loop kernel): its unit plane normal
+    (``face_normals``, (v1 − v0) × (v2 − v0) normalised), lit at one representative point,
+    the centroid. ``colours`` (T, 6): primary RGB, then secondary RGB."""
     for t in prange(triangles.shape[0]):
         o = tri_object[t]
         if obj_model[o] == 0:
             continue
-        a, b, c = verts_view[triangles[t, 0]], verts_view[triangles[t, 1]], verts_view[triangles[t, 2]]
-        u = b - a
-        w = c - a
-        n = u.copy()
-        n[0], n[1], n[2] = u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]
-        length = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
-        if length > 0.0:
-            n /= length
-        centroid = (a + b + c) / 3.0
-        textbook_lighting(obj_model[o], n, centroid, obj_amb[o], obj_dif[o], obj_spe[o], obj_power[o],
+        centroid = np.empty(3)
+        for c in range(3):
+            centroid[c] = (verts_view[triangles[t, 0], c] + verts_view[triangles[t, 1], c]
+                           + verts_view[triangles[t, 2], c]) / 3.0
+        textbook_lighting(obj_model[o], face_normals[t], centroid, obj_amb[o], obj_dif[o], obj_spe[o], obj_power[o],
                           global_ambient, local_viewer, separate, ambient_light, lights, colours[t, :3],
                           colours[t, 3:])

@@ -19,7 +19,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
 from numba import njit
 
 NEAREST, LINEAR = 0, 1
