@@ -5,7 +5,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-$(shell cat pyproject.toml | cksum | cut -d' ' -f1)
 OUT    ?= out/demo
 
-.PHONY: demo test venv bench fuzz clean clean-cache
+.PHONY: demo test venv bench fuzz clean
 
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -30,10 +30,6 @@ SEED  ?= 1
 fuzz: $(STAMP)
 	$(PY) -m lab fuzz --cases $(CASES) --seed $(SEED) --save out/fuzz
 
-# numba's on-disk cache is invalidated only when a kernel's *own* file changes: after
-# editing a kernel that others call (say renderer/texture.py), clear it.
-clean-cache:
-	find lab renderer compare lessons -name '*.nbi' -delete -o -name '*.nbc' -delete
-
-clean: clean-cache
-	rm -rf $(VENV) out build *.egg-info
+# compiled kernels are keyed by the renderer's sources (renderer/jit.py): nothing to clear by hand
+clean:
+	rm -rf $(VENV) out build *.egg-info renderer/__pycache__ "$${XDG_CACHE_HOME:-$$HOME/.cache}/scanlab/kernels"

@@ -19,7 +19,7 @@ polygon clipping; the clipped polygon is re-triangulated as a fan).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from renderer.jit import njit
 
 from renderer.workspace import empty
 

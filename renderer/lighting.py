@@ -23,7 +23,7 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-from numba import njit
+from renderer.jit import njit
 
 UNLIT, HEADLIGHT_ONLY, DIRECTIONAL, POSITIONAL = 0, 1, 2, 3
 

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import numba
 import numpy as np
-from numba import njit, prange
+from renderer.jit import njit, prange
 
 from renderer.window import SUBPIXEL
 from renderer.workspace import empty

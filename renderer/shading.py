@@ -27,7 +27,7 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-from numba import njit, prange
+from renderer.jit import njit, prange
 
 from renderer.lighting import vtk_lighting
 from renderer.textbook_lighting import textbook_lighting

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from renderer.jit import njit
 
 NEAREST, LINEAR = 0, 1
 REPEAT, CLAMP = 0, 1

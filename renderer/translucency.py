@@ -36,7 +36,7 @@ import math
 
 import numba
 import numpy as np
-from numba import njit, prange
+from renderer.jit import njit, prange
 
 from renderer.raster import FILL_RULES, first_row_of_band, pixel_fragment, row_span, set_up
 from renderer.shading import ROW_DECKS, Fragments, fragment_colour, unorm8

@@ -12,7 +12,7 @@ The flip from window rows (y up) to image rows (row 0 at the top) happens in one
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from renderer.jit import njit
 
 from renderer.workspace import empty
 

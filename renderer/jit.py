@@ -1,0 +1,160 @@
+"""numba's ``njit`` and ``prange`` for the renderer's kernels, with a compiled-kernel cache
+that can never serve code older than the sources.
+
+numba's own on-disk cache (``cache=True``) checks only the file a kernel is written in.
+A kernel that calls or inlines a function from another file (``shade`` in
+``shading.py`` inlines ``vtk_lighting`` from ``lighting.py``) keeps its old machine code
+when only the callee's file changes. Here every cached kernel of the renderer is filed
+under one folder named by a hash of *all* the renderer's sources (every ``*.py`` in this
+package, by content, not by time stamp):
+
+- any edit anywhere in ``renderer/`` gives a new hash, a new, empty folder, and every
+  kernel is compiled again from the current sources;
+- an unchanged tree keeps its hash and its warm cache (a checkout of an older commit
+  finds its own folder again);
+- only the :data:`KEEP` most recently used folders are kept; older ones are removed when
+  a new folder is made.
+
+Where the folders live (:func:`cache_root`): ``$SCANLAB_KERNEL_CACHE`` when set; else
+``renderer/__pycache__/`` beside the sources when that is writable (a clone, an editable
+install); else the user's cache folder, ``$XDG_CACHE_HOME/scanlab/kernels`` (by default
+``~/.cache/scanlab/kernels``) — a read-only tree or a package installed where the user
+cannot write.
+
+Every kernel module imports ``njit`` from here, not from numba, so no renderer kernel can
+be cached without this locator being in place (``tests/renderer/test_jit.py`` checks).
+The mechanism is numba's cache-locator hook (``numba.core.caching.CacheImpl``'s list of
+locator classes, the one numba's own ``NUMBA_CACHE_LOCATOR_CLASSES`` fills).
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+import shutil
+from pathlib import Path
+
+from numba import njit, prange
+from numba.core.caching import CacheImpl, _CacheLocator
+
+__all__ = ["njit", "prange", "SOURCE_DIR", "source_hash", "cache_root", "cache_folder", "KEEP"]
+
+SOURCE_DIR = Path(__file__).resolve().parent
+"""The renderer's source folder: the files whose contents key the cache."""
+
+KEEP = 4
+"""How many kernel folders (source versions) are kept; the least recently used go first."""
+
+PREFIX = "kernels-"
+
+
+def source_hash(folder: Path = SOURCE_DIR) -> str:
+    """SHA-256 (first 16 hex digits) of every ``*.py`` under ``folder``: relative paths and
+    contents, in sorted order. Time stamps play no part."""
+    digest = hashlib.sha256()
+    for path in sorted(folder.rglob("*.py")):
+        if "__pycache__" in path.parts:
+            continue
+        digest.update(path.relative_to(folder).as_posix().encode() + b"\0")
+        digest.update(path.read_bytes() + b"\0")
+    return digest.hexdigest()[:16]
+
+
+def _writable(folder: Path) -> bool:
+    """True when files can be made in ``folder`` (made first if missing)."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        probe = folder / f".probe-{os.getpid()}"
+        probe.touch()
+        probe.unlink()
+        return True
+    except OSError:
+        return False
+
+
+def user_cache_root() -> Path:
+    """``$XDG_CACHE_HOME/scanlab/kernels``, by default ``~/.cache/scanlab/kernels``."""
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "scanlab" / "kernels"
+
+
+def cache_root(source_dir: Path = SOURCE_DIR) -> Path:
+    """The folder that holds the ``kernels-<hash>`` folders (see the module docstring)."""
+    override = os.environ.get("SCANLAB_KERNEL_CACHE")
+    if override:
+        return Path(override)
+    in_tree = source_dir / "__pycache__"
+    return in_tree if _writable(in_tree) else user_cache_root()
+
+
+def prune(root: Path, keep: int = KEEP) -> list[Path]:
+    """Remove all but the ``keep`` most recently used ``kernels-*`` folders of ``root``;
+    returns the removed ones."""
+    folders = sorted((p for p in root.glob(PREFIX + "*") if p.is_dir()), key=lambda p: p.stat().st_mtime,
+                     reverse=True)
+    for old in folders[keep:]:
+        shutil.rmtree(old, ignore_errors=True)
+    return folders[keep:]
+
+
+def cache_folder() -> Path:
+    """This source tree's kernel folder, made (and old ones pruned) on first use; its time
+    stamp is refreshed so that pruning keeps what is in use."""
+    root = cache_root()
+    folder = root / (PREFIX + source_hash())
+    if not folder.is_dir():
+        folder.mkdir(parents=True, exist_ok=True)
+        prune(root)
+    else:
+        os.utime(folder)
+    return folder
+
+
+_FOLDER: Path | None = None
+
+
+def _folder() -> Path:
+    global _FOLDER
+    if _FOLDER is None:
+        _FOLDER = cache_folder()
+    return _FOLDER
+
+
+class SourceTreeLocator(_CacheLocator):
+    """numba cache locator for kernels defined in the renderer's own files.
+
+    Cache path: :func:`cache_folder`; source stamp: the tree hash (so a stale index is
+    never believed); disambiguator: the kernel's first line (numba adds the module and name).
+    """
+
+    def __init__(self, py_func, py_file):
+        self._path = str(_folder())
+        self._stamp = _folder().name
+        self._disambiguator = str(py_func.__code__.co_firstlineno)
+
+    def get_cache_path(self):
+        return self._path
+
+    def get_source_stamp(self):
+        return self._stamp
+
+    def get_disambiguator(self):
+        return self._disambiguator
+
+    @classmethod
+    def from_function(cls, py_func, py_file):
+        try:
+            inside = Path(py_file).resolve().is_relative_to(SOURCE_DIR)
+        except OSError:
+            return None
+        if not inside:
+            return None
+        locator = cls(py_func, py_file)
+        try:
+            locator.ensure_cache_path()
+        except OSError:
+            return None
+        return locator
+
+
+if SourceTreeLocator not in CacheImpl._locator_classes:
+    CacheImpl._locator_classes.insert(0, SourceTreeLocator)

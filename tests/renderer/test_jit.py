@@ -1,0 +1,144 @@
+"""The compiled-kernel cache never serves code older than the sources (renderer/jit.py).
+
+The end-to-end case reproduces the stale-kernel bug: ``shade`` (shading.py) inlines
+``vtk_lighting`` (lighting.py); editing only lighting.py must change the next render, in a
+fresh process, while an unchanged tree starts from its warm cache.
+"""
+from __future__ import annotations
+
+import ast
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from renderer import jit
+
+ROOT = Path(__file__).resolve().parents[2]
+PACKAGES = ("lab", "renderer", "compare", "lessons")
+
+RENDER_AND_COUNT = """
+import hashlib, json, sys, time
+start = time.perf_counter()
+import numba
+from lab import load_scene
+from renderer import render
+frame = render(load_scene("headlight-icosphere"))
+seconds = time.perf_counter() - start
+hits = misses = 0
+for name, module in list(sys.modules.items()):
+    if name.startswith("renderer."):
+        for obj in vars(module).values():
+            if isinstance(obj, numba.core.registry.CPUDispatcher):
+                hits += sum(obj.stats.cache_hits.values())
+                misses += sum(obj.stats.cache_misses.values())
+print(json.dumps({"image": hashlib.sha256(frame.rgb.tobytes()).hexdigest()[:12],
+                  "hits": hits, "misses": misses, "seconds": seconds}))
+"""
+
+
+def copy_tree(dest: Path) -> Path:
+    """The project's packages copied into ``dest``, without any compiled-kernel cache."""
+    for package in PACKAGES:
+        shutil.copytree(ROOT / package, dest / package, ignore=shutil.ignore_patterns("__pycache__", "*.nbi", "*.nbc"))
+    return dest
+
+
+def render_in_fresh_process(tree: Path, **env) -> dict:
+    environment = {k: v for k, v in os.environ.items() if k not in ("SCANLAB_KERNEL_CACHE", "NUMBA_CACHE_DIR")}
+    environment.update(PYTHONPATH=str(tree), **env)
+    done = subprocess.run([sys.executable, "-c", RENDER_AND_COUNT], cwd=tree, env=environment, capture_output=True,
+                          text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def test_an_edit_to_a_callee_in_another_file_shows_in_the_next_render(tmp_path):
+    tree = copy_tree(tmp_path / "copy")
+    cold = render_in_fresh_process(tree)
+    warm = render_in_fresh_process(tree)
+    assert cold["misses"] > 0, "a fresh copy has no cache: its kernels must be compiled"
+    assert warm["misses"] == 0 and warm["hits"] > 0, "an unchanged tree must start from its cache"
+    assert warm["image"] == cold["image"]
+    assert warm["seconds"] < cold["seconds"]
+    print(f"start-up with the kernel cache cold {cold['seconds']:.1f} s, warm {warm['seconds']:.1f} s")
+
+    lighting = tree / "renderer" / "lighting.py"
+    source = lighting.read_text()
+    assert source.count("df = max(1e-6, n[2])") == 1
+    lighting.write_text(source.replace("df = max(1e-6, n[2])", "df = 0.5 * max(1e-6, n[2])"))
+    edited = render_in_fresh_process(tree)
+    assert edited["misses"] > 0
+    assert edited["image"] != cold["image"], "the headlight's halved diffuse term must show"
+
+    lighting.write_text(source)  # back to the first sources: their folder is still there, warm
+    restored = render_in_fresh_process(tree)
+    assert restored["image"] == cold["image"] and restored["misses"] == 0
+
+
+def test_the_hash_follows_contents_not_time_stamps(tmp_path):
+    (tmp_path / "a.py").write_text("x = 1\n")
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "b.py").write_text("y = 2\n")
+    first = jit.source_hash(tmp_path)
+    os.utime(tmp_path / "a.py", (1, 1))
+    assert jit.source_hash(tmp_path) == first
+    (tmp_path / "sub" / "b.py").write_text("y = 3\n")
+    assert jit.source_hash(tmp_path) != first
+    (tmp_path / "sub" / "b.py").write_text("y = 2\n")
+    assert jit.source_hash(tmp_path) == first
+
+
+def test_the_cache_sits_beside_the_sources_when_they_are_writable(tmp_path, monkeypatch):
+    monkeypatch.delenv("SCANLAB_KERNEL_CACHE", raising=False)
+    assert jit.cache_root(tmp_path) == tmp_path / "__pycache__"
+
+
+def test_a_read_only_tree_caches_in_the_user_cache_folder(tmp_path, monkeypatch):
+    monkeypatch.delenv("SCANLAB_KERNEL_CACHE", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    monkeypatch.setattr(jit, "_writable", lambda folder: False)  # root ignores file modes: pretend
+    assert jit.cache_root(tmp_path / "tree") == tmp_path / "xdg" / "scanlab" / "kernels"
+
+
+def test_a_named_cache_folder_wins(tmp_path, monkeypatch):
+    monkeypatch.setenv("SCANLAB_KERNEL_CACHE", str(tmp_path / "mine"))
+    assert jit.cache_root() == tmp_path / "mine"
+
+
+def test_old_kernel_folders_do_not_pile_up(tmp_path):
+    for age in range(7):
+        folder = tmp_path / f"kernels-{age:016x}"
+        folder.mkdir()
+        os.utime(folder, (1000 - age, 1000 - age))  # kernels-0 is the newest
+    (tmp_path / "unrelated").mkdir()
+    removed = jit.prune(tmp_path, keep=jit.KEEP)
+    left = sorted(p.name for p in tmp_path.iterdir())
+    assert left == [f"kernels-{age:016x}" for age in range(jit.KEEP)] + ["unrelated"]
+    assert len(removed) == 7 - jit.KEEP
+
+
+def test_every_kernel_module_takes_njit_from_the_cached_door():
+    offenders = []
+    for path in sorted((ROOT / "renderer").rglob("*.py")):
+        if path.name == "jit.py":
+            continue
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.ImportFrom) and node.module == "numba":
+                names = {alias.name for alias in node.names}
+                if names & {"njit", "jit", "prange", "vectorize", "guvectorize"}:
+                    offenders.append(f"{path.name}: from numba import {', '.join(sorted(names))}")
+    assert not offenders
+
+
+def test_kernels_are_filed_under_this_trees_hash():
+    from renderer import shading  # noqa: F401  (registers nothing new: jit did on import)
+    folder = jit.cache_folder()
+    assert folder.name == "kernels-" + jit.source_hash()
+    assert jit.SourceTreeLocator in __import__("numba").core.caching.CacheImpl._locator_classes
