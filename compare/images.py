@@ -20,7 +20,6 @@ import numpy as np
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch
-from PIL import Image
 
 from lab.atomic import atomic_file
 
@@ -33,22 +32,6 @@ CMAP = "viridis"
 MISMATCH_COLOUR = (1.0, 0.0, 1.0)  # magenta: not in viridis, so it cannot be misread
 BACKGROUND_COLOUR = (0.85, 0.85, 0.85)  # light grey: neither frame has coverage
 MIN_PANEL_PX = 256  # small images are enlarged by an integer factor up to this width
-
-
-def write_png(path: str | os.PathLike, rgb: np.ndarray) -> None:
-    """Write an 8-bit RGB image as PNG, atomically.
-
-    Parameters
-    ----------
-    path : target file name.
-    rgb : (H, W, 3) uint8, sRGB-encoded, row 0 at the top.
-    """
-    rgb = np.asarray(rgb)
-    if rgb.dtype != np.uint8 or rgb.ndim != 3 or rgb.shape[2] != 3:
-        raise TypeError(f"expected (H, W, 3) uint8, got {rgb.dtype} {rgb.shape}")
-    image = Image.fromarray(np.ascontiguousarray(rgb))
-    with atomic_file(path) as f:
-        image.save(f, format="PNG")
 
 
 def _save_figure(fig: Figure, path: str | os.PathLike) -> None:

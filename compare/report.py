@@ -10,7 +10,8 @@ import json
 import time
 from pathlib import Path
 
-from compare.images import delta_e_figure, side_by_side_figure, write_png
+from compare.images import delta_e_figure, side_by_side_figure
+from lab.png import write_png
 from compare.metrics import compare_frames, coverage_masks
 from compare.reference import render_reference
 from compare.textbook_reference import scene_reference

@@ -1,6 +1,6 @@
 """``python -m lab`` works like ``scanlab``."""
 import sys
 
-from lab.cli import main
+from lab.app.cli import main
 
 sys.exit(main())

@@ -19,17 +19,17 @@ import numpy as np
 
 from lab import shapes
 from lab.mesh import Mesh
+from lab.presets import preset_path
 from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, TRANSPARENCIES, Camera, Image,
                        Light, Material, RenderSettings, Scene, SceneObject, headlight)
 from lab.values import MAX_MAGNITUDE, file_problem, real, show
-from renderer.transform import model_matrix
+from lab.matrices import model_matrix
 
 MAX_SIZE = 8192
 """Largest image width and height without ``--allow-large`` (pixels)."""
 LARGE_SIZE = 65536
 """Largest image width and height with ``--allow-large`` (pixels)."""
 CSG_SEGMENTS = 128
-SCENES_DIR = Path(__file__).parent / "scenes"
 
 
 class SceneError(ValueError):
@@ -400,7 +400,7 @@ def load_scene(path_or_name, allow_large: bool = False) -> Scene:
     text = str(path_or_name)
     path = Path(text)
     if path.suffix.lower() != ".toml":
-        preset = SCENES_DIR / f"{text}.toml"
+        preset = preset_path(text)
         if file_problem(preset) is None:
             path = preset
         elif text.partition(":")[0] in shapes.SHAPES:
@@ -423,7 +423,7 @@ def parse_scene(raw: bytes, source: str = "<scene>", base: Path | None = None, a
     """Parse the bytes of a scene file named ``source`` (relative paths start at ``base``).
 
     Raises SceneError for anything wrong, from UTF-8 and TOML syntax (with line and
-    column) to every key; :mod:`lab.fuzz` checks that nothing else escapes.
+    column) to every key; :mod:`lab.app.fuzz` checks that nothing else escapes.
     """
     try:
         data = tomllib.loads(raw.decode("utf-8"))

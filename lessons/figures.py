@@ -26,7 +26,7 @@ from renderer import RenderOptions, render
 
 def facing(scene):
     """The same scene with every object turned to face the camera (no rotation: the quad faces +z)."""
-    from renderer.transform import model_matrix
+    from lab.matrices import model_matrix
 
     objs = tuple(dataclasses.replace(o, model_to_world=model_matrix(translate=(0.0, 0.3, -1.0)))
                  for o in scene.objects)

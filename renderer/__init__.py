@@ -1,11 +1,23 @@
 """scanlab's own renderer: the course's polygon pipeline in numpy and numba.
 
-This package never imports vtk or pyvista: it is what the VTK reference checks.
+This package never imports vtk or pyvista: it is what the VTK reference checks. It
+imports only the ground floor (``lab``'s scene model), numpy and numba.
 Entry point: :func:`render`. Stages, in order: :mod:`~renderer.transform`,
 :mod:`~renderer.camera`, :mod:`~renderer.clip`, :mod:`~renderer.window`,
 :mod:`~renderer.raster`, :mod:`~renderer.shading` (with :mod:`~renderer.lighting`),
 assembled in :mod:`~renderer.pipeline`.
+
+Importing the package loads nothing: ``render`` and ``RenderOptions`` come from
+:mod:`renderer.pipeline` on first use, so ``import renderer.camera`` does not compile
+or load the kernels.
 """
-from renderer.pipeline import RenderOptions, render
 
 __all__ = ["RenderOptions", "render"]
+
+
+def __getattr__(name):
+    if name in __all__:
+        from renderer import pipeline
+
+        return getattr(pipeline, name)
+    raise AttributeError(f"module 'renderer' has no attribute {name!r}")

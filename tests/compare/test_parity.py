@@ -14,8 +14,9 @@ from compare.metrics import measure
 from compare.reference import render_reference
 from compare.metrics import PARITY_BARS as BARS, failed_bars
 from lab.normals import scene_with_normals
-from lab.demo import shows_a_failure
-from lab.loading import SCENES_DIR, load_scene
+from lab.app.demo import shows_a_failure
+from lab.loading import load_scene
+from lab.presets import SCENES_DIR
 from renderer import RenderOptions, render
 
 PRESETS = sorted(p.stem for p in SCENES_DIR.glob("*.toml") if not shows_a_failure(load_scene(p)))

@@ -40,7 +40,7 @@ def test_csg_scene_matches_vtk_and_the_implicit_volume():
     import tomllib
 
     from lab.csg import from_dict, monte_carlo_volume
-    from lab.loading import SCENES_DIR
+    from lab.presets import SCENES_DIR
     from lab.measure import enclosed_volume
 
     scene = load_scene("csg")

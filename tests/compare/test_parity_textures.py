@@ -12,7 +12,7 @@ from lab.mesh import Mesh
 from lab.scene import Camera, Image, Light, Material, Scene, SceneObject
 from lab.texture import load_texture
 from renderer import render
-from renderer.transform import model_matrix
+from lab.matrices import model_matrix
 
 EARTH = Path(pytest.importorskip("pyvista").__file__).parent / "examples" / "2k_earth_daymap.jpg"
 

@@ -13,7 +13,7 @@ from lab.scene import Camera, Image, Light, Material, Scene, SceneObject, headli
 from lab.shapes import icosphere, quad
 from renderer import render
 from renderer.shading import to_8bit
-from renderer.transform import model_matrix
+from lab.matrices import model_matrix
 
 REPO = Path(__file__).resolve().parents[2]
 

@@ -31,7 +31,8 @@ import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from lab.loading import SCENES_DIR, SceneError, parse_scene
+from lab.loading import SceneError, parse_scene
+from lab.presets import SCENES_DIR
 
 NUMBER = re.compile(rb"(?<![\w.])[-+]?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?(?![\w.])")
 KEY = re.compile(rb"^(\s*)([A-Za-z_][A-Za-z0-9_]*)(\s*=)", re.M)

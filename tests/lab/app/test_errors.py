@@ -1,6 +1,6 @@
 """Bad input: every case ends in one line naming the file and the key, exit status 2, no
 traceback, nothing written. One table row per case (see ``CASES``); ``scanlab`` runs in
-process (``lab.cli.main``), and a few cases again as real ``python -m lab`` processes.
+process (``lab.app.cli.main``), and a few cases again as real ``python -m lab`` processes.
 """
 from __future__ import annotations
 
@@ -13,9 +13,9 @@ from pathlib import Path
 
 import pytest
 
-from lab.cli import main
+from lab.app.cli import main
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 
 # --------------------------------------------------------------------------- scene files
 BASE = {
@@ -329,7 +329,7 @@ def _make_files(root: Path, files: dict, case_id: str) -> None:
             continue
         path.parent.mkdir(parents=True, exist_ok=True)
         if PNG_FILES.get(case_id) == name:
-            from compare.images import write_png
+            from lab.png import write_png
             import numpy as np
 
             write_png(path, np.zeros((4, 4, 3), np.uint8))

@@ -11,7 +11,8 @@ import os
 import sys
 from pathlib import Path
 
-from lab.loading import LARGE_SIZE, MAX_SIZE, SCENES_DIR, SceneError, load_scene, size_problem
+from lab.loading import LARGE_SIZE, MAX_SIZE, SceneError, load_scene, size_problem
+from lab.presets import SCENES_DIR, preset_description, preset_names
 from lab.scene import MODELS, SHADINGS
 
 
@@ -124,7 +125,7 @@ def _output(path, scene) -> Path:
 
 
 def _draw_to_png(args, draw) -> int:
-    from compare.images import write_png
+    from lab.png import write_png
 
     scene = _load(args)
     out = _output(args.output, scene)
@@ -163,15 +164,6 @@ def cmd_compare(args) -> int:
     return 0
 
 
-def preset_names() -> list[str]:
-    return sorted(p.stem for p in SCENES_DIR.glob("*.toml"))
-
-
-def preset_description(name: str) -> str:
-    first = (SCENES_DIR / f"{name}.toml").read_text(encoding="utf-8").splitlines()[0]
-    return first.lstrip("# ").strip()
-
-
 def cmd_scenes(args) -> int:
     names = preset_names()
     width = max(len(n) for n in names)
@@ -192,7 +184,7 @@ def cmd_bench(args) -> int:
 
 
 def cmd_demo(args) -> int:
-    from lab.demo import run_demo
+    from lab.app.demo import run_demo
 
     names = preset_names()
     for name in args.scenes:
@@ -252,7 +244,7 @@ def cmd_lessons_figures(args) -> int:
 
 
 def cmd_fuzz(args) -> int:
-    from lab.fuzz import run_fuzz
+    from lab.app.fuzz import run_fuzz
 
     save = Path(args.save)
 

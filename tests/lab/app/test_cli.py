@@ -9,9 +9,9 @@ from pathlib import Path
 
 import pytest
 
-from lab.cli import main
+from lab.app.cli import main
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 
 
 def run(*args, env=None):
@@ -101,7 +101,7 @@ def test_scenes_lists_every_preset(capsys):
 def test_every_preset_compares_from_the_command_line(preset, tmp_path, capsys):
     """scanlab compare PRESET --fail-above 1: exit 0 (p99.9 ΔE2000 under one JND), or 1 for the presets
     made to show a failure (the painter's algorithm)."""
-    from lab.demo import shows_a_failure
+    from lab.app.demo import shows_a_failure
     from lab.loading import load_scene
 
     expected = 1 if shows_a_failure(load_scene(preset)) else 0

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from lab.cli import main
+from lab.app.cli import main
 from lab.loading import load_scene
 from lab.meshfiles import MeshFileError, read_mesh, write_mesh
 

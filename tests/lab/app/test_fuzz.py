@@ -3,8 +3,8 @@ from __future__ import annotations
 
 import random
 
-from lab.fuzz import MUTATIONS, check_case, mutate, run_fuzz
-from lab.loading import SCENES_DIR
+from lab.app.fuzz import MUTATIONS, check_case, mutate, run_fuzz
+from lab.presets import SCENES_DIR
 
 CASES = 4000
 SEED = 20240611
@@ -40,19 +40,19 @@ def test_a_case_is_reproduced_by_seed_and_index():
 
 def test_check_case_flags_other_exceptions(monkeypatch):
     """The rule catches a loader that raises anything but SceneError."""
-    import lab.fuzz
+    import lab.app.fuzz
 
     def broken(*args, **kwargs):
         raise KeyError("boom")
 
-    monkeypatch.setattr(lab.fuzz, "parse_scene", broken)
+    monkeypatch.setattr(lab.app.fuzz, "parse_scene", broken)
     outcome, detail = check_case(b"", "x.toml")
     assert outcome == "failure" and "KeyError" in detail
 
 
 def test_the_fuzz_command_prints_a_summary(tmp_path, capsys):
     """`scanlab fuzz --cases N --seed S` prints one summary line and exits 0 when nothing fails."""
-    from lab.cli import main
+    from lab.app.cli import main
 
     assert main(["fuzz", "--cases", "60", "--seed", "3", "--save", str(tmp_path / "f")]) == 0
     out = capsys.readouterr().out

@@ -10,7 +10,8 @@ import sys
 import time
 from pathlib import Path
 
-from lab.loading import SCENES_DIR, load_scene
+from lab.loading import load_scene
+from lab.presets import preset_description, preset_path
 
 def shows_a_failure(scene) -> bool:
     """A preset made to fail against VTK: the painter's algorithm or no hidden-surface removal."""
@@ -63,14 +64,13 @@ def run_demo(out: Path, names: list[str]) -> int:
     """Compare the named presets into ``out``; print where everything is. Exit status 0/1."""
     from compare.report import compare_scene, summary_line, write_json
     from lab.atomic import write_text
-    from lab.cli import preset_description
 
     out.mkdir(parents=True, exist_ok=True)
     rows, started = [], time.perf_counter()
     print(f"scanlab demo: comparing {len(names)} scenes with VTK (the first run compiles the renderer's kernels)")
     for i, name in enumerate(names):
         _progress(i, len(names), name, started)
-        scene = load_scene(SCENES_DIR / f"{name}.toml")
+        scene = load_scene(preset_path(name))
         m = compare_scene(scene, out / name, name=name)
         m["description"] = preset_description(name)
         m["meant_to_fail"] = shows_a_failure(scene)

@@ -11,17 +11,18 @@ import pytest
 from PIL import Image
 
 import lab.atomic
-from lab.cli import main
+from lab.app.cli import main
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 
 
 # --------------------------------------------------------------------------- atomic writes
 def _writers(tmp_path):
     """(name, target, write()) for every kind of file scanlab writes."""
-    from compare.images import delta_e_figure, side_by_side_figure, write_png
+    from compare.images import delta_e_figure, side_by_side_figure
+    from lab.png import write_png
     from compare.report import write_json
-    from lab.fuzz import Failure, save_failure
+    from lab.app.fuzz import Failure, save_failure
     from lab.meshfiles import write_mesh
     from lab.shapes import cube
 
