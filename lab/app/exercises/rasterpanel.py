@@ -1,6 +1,6 @@
 """The raster exercise's picture: pixel classes of the test meshes, with the triangles drawn over.
 
-Four meshes side by side (those with the most wrong pixels, else the first four), each
+Up to four meshes side by side (those with the most wrong pixels, else the first four), each
 pixel coloured by class — correct (grey), missing (red), duplicated (orange), unexpected
 (blue) — and every triangle's edges on top, in window coordinates (y up, pixel (x, y)
 spanning [x, x + 1] × [y, y + 1]). Written with matplotlib's object API, atomically.
@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from lab.app.exercises.rastertests import CLASSES
+from lab.app.exercises.rastercases import CLASSES
 
 COLOURS = {"background": (1.0, 1.0, 1.0), "correct": (0.78, 0.80, 0.78), "missing": (0.86, 0.12, 0.12),
            "duplicated": (1.0, 0.60, 0.0), "unexpected": (0.15, 0.35, 0.95)}
@@ -28,7 +28,7 @@ class RasterPanel:
         wrong = [sum(int(c[k].sum()) for k in CLASSES[1:]) for c in self.classes]
         if not any(wrong):
             return list(range(min(SHOWN, len(self.meshes))))
-        return sorted(sorted(range(len(wrong)), key=lambda i: -wrong[i])[:SHOWN])
+        return sorted(sorted((i for i in range(len(wrong)) if wrong[i]), key=lambda i: -wrong[i])[:SHOWN])
 
     def image(self, i: int) -> np.ndarray:
         """(H, W, 3) float colours of mesh ``i``'s pixel classes, window rows (y up)."""

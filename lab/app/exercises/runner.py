@@ -150,10 +150,15 @@ def run(job_dir: str) -> dict:
                     return {"kind": "wrong-return-type", "case": i, "item": j,
                             "message": f"item {j + 1} is not an array of numbers (dtype {array.dtype})"}
                 arrays.append(array)
-            for j, array in enumerate(arrays):
-                np.save(os.path.join(job_dir, f"c{i}_{j}.npy"), array, allow_pickle=False)
         except BaseException as exc:  # noqa: BLE001 -- the student's exception, whatever it is
             return {**describe(exc, file), "stage": "call", "case": i}
+        for j, array in enumerate(arrays):
+            try:
+                np.save(os.path.join(job_dir, f"c{i}_{j}.npy"), array, allow_pickle=False)
+            except OSError:
+                return {"kind": "wrong-return-type", "case": i, "item": j,
+                        "message": f"item {j + 1} is too large to hand back ({array.nbytes:,} bytes; the limit is "
+                                   f"{job.get('limits', {}).get('file_mb', 256)} MiB)"}
     return {"kind": "ok", "cases": len(job["cases"])}
 
 

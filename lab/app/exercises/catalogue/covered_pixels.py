@@ -4,7 +4,7 @@ fill rule (the one VTK draws through llvmpipe).
 Reference: :func:`renderer.coverage.triangle_coverage` — corners snapped to 1/256 pixel,
 the scanline span of :func:`renderer.raster.scanline_span` with the top-left rule. The
 student's function is called once per triangle of the test meshes
-(:func:`lab.app.exercises.rastertests.test_meshes`, about 400 triangles); every pixel of
+(:func:`lab.app.exercises.rastercases.raster_meshes`, about 400 triangles); every pixel of
 every mesh is classified, and the mistakes with a known signature — ties taken both
 ways or neither, the tie rule mirrored, rows upside down, pixel corners instead of
 centres, clockwise triangles dropped, no snapping — are named when the student's masks
@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from lab.app.exercises.diagnoses.registry import Finding
-from lab.app.exercises.rastertests import CLASSES, classify, edge_function_masks, test_meshes, to_fixed
+from lab.app.exercises.rastercases import CLASSES, classify, edge_function_masks, raster_meshes, to_fixed
 from lab.app.exercises.registry import Case, Exercise, Judgement, Output, register
 from lab.app.exercises.starters import starter
 
@@ -72,7 +72,7 @@ def call(tri: np.ndarray, width: int, height: int) -> str:
 
 def cases() -> list[Case]:
     return [Case((list(map(float, tri[0])), list(map(float, tri[1])), list(map(float, tri[2])), m.width, m.height),
-                 call(tri, m.width, m.height)) for m in test_meshes() for tri in m.triangles]
+                 call(tri, m.width, m.height)) for m in raster_meshes() for tri in m.triangles]
 
 
 def reference_masks(mesh) -> np.ndarray:
@@ -126,7 +126,7 @@ def first_of_each(meshes, references, students, classes) -> dict:
 def judge(cases_: list[Case], results: list[list[np.ndarray]]) -> Judgement:
     from lab.app.exercises.rasterpanel import RasterPanel
 
-    meshes = test_meshes()
+    meshes = raster_meshes()
     masks = [r[0].astype(bool) for r in results]
     judgement = Judgement()
     references, students, classes, start = [], [], [], 0

@@ -25,7 +25,7 @@ SUBPIXEL = 256
 
 
 @dataclass(frozen=True)
-class TestMesh:
+class RasterMesh:
     """Triangles (K, 3, 2) in window coordinates, in a ``width`` × ``height`` window.
     ``on_grid``: every corner is a multiple of 1/256 pixel (snapping changes nothing)."""
 
@@ -78,7 +78,7 @@ def _tiny(rng, cells_x, cells_y):
     return tris[area != 0]
 
 
-def test_meshes() -> list[TestMesh]:
+def raster_meshes() -> list[RasterMesh]:
     """The exercise's meshes (about 400 triangles), the same on every call."""
     rng = np.random.default_rng(14)
     half = np.round(rng.uniform(0, 1, (30, 2)) * [48, 40]) / 2
@@ -92,19 +92,19 @@ def test_meshes() -> list[TestMesh]:
     flat = np.array([[[1.5, 1.5], [5.5, 5.5], [9.5, 9.5]], [[2.0, 7.5], [12.0, 7.5], [20.0, 7.5]],
                      [[3.5, 3.5], [3.5, 3.5], [8.25, 2.0]], [[15.5, 2.5], [15.5, 9.5], [15.5, 18.5]]])
     return [
-        TestMesh("fan around a pixel centre", "画素中心まわりの扇", 24, 20, _fan((12.5, 10.5), 8.0, 12, 0.5)),
-        TestMesh("fan around a pixel corner", "画素の角まわりの扇", 24, 20, _fan((12.0, 10.0), 7.5, 7, 0.25, 0.3)),
-        TestMesh("grid through pixel centres", "画素中心を通る格子", 24, 20, grid),
-        TestMesh("grid, clockwise", "格子（時計回り）", 24, 20, grid[:, [0, 2, 1]]),
-        TestMesh("Delaunay on the half-pixel grid", "半画素格子上のドロネー分割", 24, 20,
+        RasterMesh("fan around a pixel centre", "画素中心まわりの扇", 24, 20, _fan((12.5, 10.5), 8.0, 12, 0.5)),
+        RasterMesh("fan around a pixel corner", "画素の角まわりの扇", 24, 20, _fan((12.0, 10.0), 7.5, 7, 0.25, 0.3)),
+        RasterMesh("grid through pixel centres", "画素中心を通る格子", 24, 20, grid),
+        RasterMesh("grid, clockwise", "格子（時計回り）", 24, 20, grid[:, [0, 2, 1]]),
+        RasterMesh("Delaunay on the half-pixel grid", "半画素格子上のドロネー分割", 24, 20,
                  _delaunay(np.concatenate([frame, half]))),
-        TestMesh("Delaunay on the 1/256 grid", "1/256 格子上のドロネー分割", 24, 20,
+        RasterMesh("Delaunay on the 1/256 grid", "1/256 格子上のドロネー分割", 24, 20,
                  _delaunay(np.concatenate([frame, fine]))),
-        TestMesh("thin slivers", "細長い三角形", 24, 20, sliver),
-        TestMesh("tiny triangles", "小さな三角形", 24, 21, _tiny(rng, 8, 7)),
-        TestMesh("huge triangles", "巨大な三角形", 24, 20, huge),
-        TestMesh("zero-area triangles", "面積 0 の三角形", 24, 20, flat),
-        TestMesh("corners off the 1/256 grid", "1/256 格子外の頂点", 24, 20,
+        RasterMesh("thin slivers", "細長い三角形", 24, 20, sliver),
+        RasterMesh("tiny triangles", "小さな三角形", 24, 21, _tiny(rng, 8, 7)),
+        RasterMesh("huge triangles", "巨大な三角形", 24, 20, huge),
+        RasterMesh("zero-area triangles", "面積 0 の三角形", 24, 20, flat),
+        RasterMesh("corners off the 1/256 grid", "1/256 格子外の頂点", 24, 20,
                  _delaunay(np.concatenate([frame + 1e-3, off])), on_grid=False),
     ]
 
