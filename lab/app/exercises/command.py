@@ -111,8 +111,9 @@ def cmd_grade(args) -> int:
     started = time.perf_counter()
     rows = grade_folder(ex.name, files, out, args.workers, limits, progress=_progress)
     seconds = time.perf_counter() - started
-    write_text(out / "grades.csv", grades_csv(rows))
-    write_text(out / "index.html", grades_page(ex, rows, args.lang, seconds, args.workers, limits))
+    for path, text in ((out / "grades.csv", grades_csv(rows)),
+                       (out / "index.html", grades_page(ex, rows, args.lang, seconds, args.workers, limits))):
+        write_text(path, text)
     counts = {v: sum(r["verdict"] == v for r in rows) for v in ("right", "wrong", "cannot-judge")}
     print(f"{len(rows)} graded in {seconds:.1f} s: {counts['right']} right, {counts['wrong']} wrong, "
           f"{counts['cannot-judge']} cannot be judged")

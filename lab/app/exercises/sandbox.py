@@ -35,6 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
+from lab.atomic import write_text
+
 RUNNER = Path(__file__).resolve().with_name("runner.py")
 """The child's entry point, run as a script (not imported) under ``python -I``."""
 
@@ -133,7 +135,8 @@ def run_submission(file: str | os.PathLike, function: str, cases: list, n_output
         job = {"file": str(Path(file).resolve()), "function": function, "cases": cases, "n_outputs": n_outputs,
                "limits": {"cpu_seconds": limits.cpu_seconds, "memory_mb": limits.memory_mb,
                           "file_mb": limits.file_mb, "wall_seconds": limits.wall}}
-        (job_dir / "job.json").write_text(json.dumps(job), encoding="utf-8")
+        path = job_dir / "job.json"
+        write_text(path, json.dumps(job))
         proc = subprocess.Popen([sys.executable, "-I", str(RUNNER), str(job_dir)], cwd=job_dir,
                                 env=child_environment(tmp), stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                                 stderr=subprocess.STDOUT, start_new_session=True)

@@ -70,6 +70,8 @@ def test_every_writer_goes_through_atomic_file():
                 continue
             if file.relative_to(REPO).as_posix() == "renderer/jit.py":
                 continue  # removes stale compiled-kernel folders: a cache, not an output
+            if file.relative_to(REPO).as_posix() == "lab/app/exercises/runner.py":
+                continue  # the sandboxed child: status and results into its private temporary folder, renamed
             for number, line in enumerate(file.read_text().splitlines(), 1):
                 code = line.split("#")[0]
                 if plain.search(code) and "lab.atomic" not in code and "write_text(page" not in code \
