@@ -14,7 +14,6 @@ from __future__ import annotations
 import importlib
 import pkgutil
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Callable
 
 import numpy as np
@@ -137,10 +136,3 @@ def get(name: str) -> Exercise:
     if name not in found:
         raise KeyError(name)
     return found[name]
-
-
-def source_folder() -> Path:
-    """Where the catalogue's modules live."""
-    import lab.app.exercises.catalogue as catalogue
-
-    return Path(catalogue.__file__).parent

@@ -13,7 +13,8 @@ student's code can.
 
 The runner first limits itself (``resource.setrlimit``: CPU seconds — the kernel sends
 SIGXCPU, then SIGKILL —, address space, size of any file written, no core files; and
-``signal.alarm`` after the wall time, should the parent be gone), then
+``signal.alarm`` after the wall time, and death with its parent on Linux, should the
+parent be gone), then
 compiles and executes the student's file as the module ``submission``, looks the function
 up and calls it once per case. Lists among the arguments are passed as float64 numpy
 arrays. Each returned value (a tuple of ``n_outputs`` items, or one item when
@@ -46,6 +47,7 @@ def apply_limits(limits: dict) -> None:
     import signal
 
     signal.alarm(max(1, int(float(limits.get("wall_seconds", 25))) + 1))
+    die_with_parent()
     cpu = max(1, int(round(float(limits.get("cpu_seconds", 10)))))
     resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
     memory = int(limits.get("memory_mb", 1024)) * 2 ** 20
@@ -53,6 +55,21 @@ def apply_limits(limits: dict) -> None:
     size = int(limits.get("file_mb", 256)) * 2 ** 20
     resource.setrlimit(resource.RLIMIT_FSIZE, (size, size))
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+
+
+def die_with_parent() -> None:
+    """On Linux, ask the kernel to kill this process when the checker that started it ends
+    (``prctl(PR_SET_PDEATHSIG, SIGKILL)``); elsewhere the alarm alone stops it."""
+    import ctypes
+    import signal
+
+    parent = os.getppid()
+    try:
+        ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGKILL), 0, 0, 0)  # 1 = PR_SET_PDEATHSIG
+    except (OSError, AttributeError):
+        return
+    if os.getppid() != parent:  # the parent ended before the request
+        os._exit(1)
 
 
 def write_status(job_dir: str, status: dict) -> None:

@@ -6,7 +6,7 @@ import pytest
 
 from lab.app.exercises.checker import Report, check_file, type_problem
 from lab.app.exercises.diagnoses.registry import Finding
-from lab.app.exercises.registry import Judgement, get
+from lab.app.exercises.registry import get
 
 from .checked_fixtures import FIXTURES, LIMITS, judged
 

@@ -1,7 +1,6 @@
 """``scanlab exercise list|start|check|grade``: names, outputs and exit statuses as fixed."""
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 

@@ -6,7 +6,6 @@ Each case writes a tiny student file and runs it with short limits (1–2 s of C
 from __future__ import annotations
 
 import os
-import shutil
 import time
 from pathlib import Path
 
@@ -157,3 +156,31 @@ def test_each_run_has_its_own_empty_numba_cache_folder_which_is_then_removed(tmp
         seen.append(folder)
         assert not Path(folder).exists(), "the cache folder must go with the run"
     assert seen[0] != seen[1]
+
+
+def test_the_child_ends_with_the_checker_that_started_it(tmp_path):
+    """A checker killed mid-run (a grader's worker that overran) takes its sleeping student with it."""
+    import signal
+    import subprocess
+    import sys
+
+    marker = tmp_path / "student.pid"
+    (tmp_path / "s.py").write_text(f"import os, time\ndef f(n):\n    open({str(marker)!r}, 'w').write(str(os.getpid()))\n"
+                                   "    time.sleep(60)\n")
+    code = (f"from lab.app.exercises.sandbox import Limits, run_submission\n"
+            f"run_submission({str(tmp_path / 's.py')!r}, 'f', [[1]], 1, Limits(cpu_seconds=5, wall_seconds=60))\n")
+    checker = subprocess.Popen([sys.executable, "-c", code])
+    deadline = time.time() + 60
+    while not marker.exists() and time.time() < deadline:
+        time.sleep(0.1)
+    student = int(marker.read_text())
+    checker.send_signal(signal.SIGKILL)
+    checker.wait()
+    for _ in range(50):
+        try:
+            os.kill(student, 0)
+        except ProcessLookupError:
+            return
+        time.sleep(0.1)
+    os.kill(student, signal.SIGKILL)
+    raise AssertionError("the student's process outlived its checker")
