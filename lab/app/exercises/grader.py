@@ -89,7 +89,7 @@ def grade_folder(exercise: str, files: list[Path], out: Path, workers: int, limi
     rows: list[dict | None] = [None] * len(files)
     lock = threading.Lock()
     done = [0]
-    timeout = limits.wall + DRAWING_SECONDS
+    timeout = max(1.0, limits.wall + DRAWING_SECONDS)
 
     def serve():
         worker = _Worker(env)
@@ -102,7 +102,10 @@ def grade_folder(exercise: str, files: list[Path], out: Path, workers: int, limi
                 started = time.perf_counter()
                 job = {"exercise": exercise, "file": str(f.resolve()), "out": str(out), "stem": f.stem,
                        "limits": asdict(limits)}
-                answer = worker.ask(job, timeout)
+                try:
+                    answer = worker.ask(job, timeout)
+                except Exception as exc:  # noqa: BLE001 -- a garbled answer costs this row, not the class
+                    answer = {"error": f"{type(exc).__name__}: {exc}"}
                 if answer is None or "error" in answer:
                     message = answer["error"] if answer else f"no answer within {timeout:g} s"
                     answer = checker_failure(f, message, time.perf_counter() - started)

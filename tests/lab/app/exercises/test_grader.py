@@ -100,7 +100,7 @@ def test_a_worker_that_fails_or_hangs_costs_one_row_not_the_class(tmp_path, monk
     assert [(r["file"], r["verdict"], r["codes"]) for r in rows] == [
         ("sleeper.py", "cannot-judge", ["checker-error"]), ("right.py", "right", [])]
     assert "no answer within 10 s" in rows[0]["messages"]["en"][0]
-    rows = grade_folder("no-such-exercise", [right], tmp_path / "out", 1)
+    rows = grade_folder("no-such-exercise", [right], tmp_path / "out", 1, limits)
     assert rows[0]["codes"] == ["checker-error"] and "KeyError" in rows[0]["messages"]["en"][0]
 
 
