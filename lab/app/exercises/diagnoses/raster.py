@@ -28,7 +28,7 @@ def _first_ja(d: dict) -> str:
     lines = []
     for cls, first in d.get("first", {}).items():
         lines.append(f"{_CLASS_JA[cls]} {d['counts'][cls]} 画素: 最初はメッシュ「{first['mesh_ja']}」の三角形 "
-                     f"{'と'.join(map(str, first['triangles']))} {first['corners']} の画素 ({first['x']}, {first['y']})")
+                     f"{' と '.join(map(str, first['triangles']))} {first['corners']} の画素 ({first['x']}, {first['y']})")
     return "。".join(lines)
 
 
