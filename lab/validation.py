@@ -42,6 +42,8 @@ def quantise_colour(c) -> tuple[float, float, float]:
 class Table:
     """The values of one table (a dict) read from file ``source`` at path ``where``.
 
+    ``table`` must be a mapping (anything else is the error "expected a table").
+
     ``allowed``, when given, are the keys the table may hold; any other key is an error
     with a "did you mean" hint (or the list of valid keys when nothing is close). A
     reader's ``default`` is used when the key is absent; :data:`REQUIRED` makes absence
