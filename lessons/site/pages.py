@@ -1,0 +1,91 @@
+"""Build-wide steps of the lesson site: language settings, the language switch, checks, copies.
+
+- ``config-inited``: Japanese pages index their text with Janome and the course's
+  terms (:mod:`lessons.site.search`).
+- ``builder-inited``: MathJax and the Japanese font join the static files (:mod:`lessons.site.assets`).
+- ``html-page-context``: every page gets a link to the same page in the other language
+  (the site is published as ``en/`` and ``ja/`` side by side).
+- ``env-updated``: the build stops if any figure's verdict is not the one its lesson
+  promises (:class:`FigureCheckError`).
+- ``build-finished``: the figures the pages show are copied from the cache to
+  ``_figures/``, the scene files to ``_scenes/``.
+"""
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+from sphinx.errors import SphinxError
+
+from lessons.site import record
+from lessons.site.assets import static_folder
+from lessons.site.search import search_options
+
+LANGUAGES = {"en": "English", "ja": "日本語"}
+
+
+class FigureCheckError(SphinxError):
+    """Figures whose verdict is not the one their lesson promises."""
+
+    category = "Figure check failed"
+
+
+def is_japanese(config) -> bool:
+    return (config.language or "en").startswith("ja")
+
+
+def on_config_inited(app, config) -> None:
+    if not config.scanlab_figure_cache:  # sphinx-build run by hand: beside the doctrees
+        config.scanlab_figure_cache = str(Path(app.doctreedir).parent / "scanlab-figures")
+    if is_japanese(config):
+        config.html_search_options = search_options(Path(app.doctreedir) / "janome-terms.csv")
+
+
+def on_builder_inited(app) -> None:
+    if app.builder.format != "html":
+        return
+    extra = static_folder(Path(app.doctreedir) / "static-extra", japanese=is_japanese(app.config))
+    app.config.html_static_path = [*app.config.html_static_path, str(extra)]
+    if is_japanese(app.config):
+        app.add_css_file("scanlab-ja.css")
+
+
+def other_language(language: str) -> str:
+    return "en" if language.startswith("ja") else "ja"
+
+
+def on_html_page_context(app, pagename, templatename, context, doctree) -> None:
+    """``scanlab_switch``: the same page in the other language, relative to this one."""
+    other = other_language(app.config.language or "en")
+    up = "../" * (pagename.count("/") + 1)
+    context["scanlab_switch"] = {"href": f"{up}{other}/{pagename}.html", "label": LANGUAGES[other], "lang": other}
+    context["scanlab_chooser"] = f"{up}index.html"
+
+
+def on_env_updated(app, env) -> list:
+    problems = [p for doc in sorted(record.all_of(env, "scanlab_problems"))
+                for p in record.all_of(env, "scanlab_problems")[doc]]
+    if problems:
+        raise FigureCheckError("\n".join(problems))
+    return []
+
+
+def figure_keys(env) -> set[str]:
+    return {k for keys in record.all_of(env, "scanlab_figures").values() for k in keys}
+
+
+def on_build_finished(app, exception) -> None:
+    if exception is not None or app.builder.format != "html":
+        return
+    out = Path(app.outdir)
+    cache = Path(app.config.scanlab_figure_cache)
+    for key in sorted(figure_keys(app.env)):
+        target = out / "_figures" / key
+        if not target.is_dir():
+            shutil.copytree(cache / key, target, ignore=shutil.ignore_patterns("result.json"))
+    srcdir = Path(app.srcdir)
+    for paths in record.all_of(app.env, "scanlab_scenes").values():
+        for path in paths:
+            rel = Path(path).resolve().relative_to(srcdir.resolve())
+            (out / "_scenes" / rel).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(path, out / "_scenes" / rel)
