@@ -95,6 +95,12 @@ def chooser_page() -> str:
             f"<ul>{links}</ul></html>\n")
 
 
+def forget(doctrees: Path) -> None:
+    """Drop Sphinx's saved state after a failed build: a page that warned would otherwise not
+    be read again, and the next build would pass without its warning (figures stay cached)."""
+    (doctrees / "environment.pickle").unlink(missing_ok=True)
+
+
 def build_language(lang: str, out: Path, cache: Path, jobs: int, progress: Progress) -> set[str]:
     """Build one language into ``out/lang``; return the cache keys of the figures it shows."""
     from sphinx.application import Sphinx
@@ -106,18 +112,22 @@ def build_language(lang: str, out: Path, cache: Path, jobs: int, progress: Progr
 
     console.nocolor()
     warnings = io.StringIO()
+    doctrees = cache / "doctrees" / lang
     try:
         with patch_docutils(str(LESSONS)), docutils_namespace():  # as sphinx-build: one build's registrations
-            app = Sphinx(str(LESSONS), str(LESSONS), str(out / lang), str(cache / "doctrees" / lang), "html",
+            app = Sphinx(str(LESSONS), str(LESSONS), str(out / lang), str(doctrees), "html",
                          confoverrides={"language": lang, "scanlab_figure_cache": str(cache / "figures")},
                          status=progress, warning=warnings, freshenv=False, warningiserror=True, parallel=jobs)
             app.build()
     except FigureCheckError as exc:
+        forget(doctrees)
         raise BuildFailed(f"{lang}: figures that break their lesson's promise:\n  " + str(exc).replace("\n", "\n  "),
                           1) from None
     except SphinxError as exc:
+        forget(doctrees)
         raise BuildFailed(f"{lang}: {exc.category}: {exc}", 2) from None
     if app.statuscode:
+        forget(doctrees)
         text = warnings.getvalue().strip()
         raise BuildFailed(f"{lang}: the build has warnings (treated as errors):\n{text}", 1)
     return figure_keys(app.env)

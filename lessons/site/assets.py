@@ -4,9 +4,9 @@
   installed with ``npm ci`` into ``lessons/node_modules/`` (not in git): only
   ``es5/tex-chtml.js`` and its CHTML fonts are published, as ``_static/mathjax/``
   (``mathjax_path`` in ``conf.py`` names it).
-- For Japanese pages, the IPAex Gothic font that the PyPI package ``matplotlib-fontja``
+- The IPAex Gothic font that the PyPI package ``matplotlib-fontja``
   ships (IPA Font License): the plots' Japanese labels are drawn with it, and the pages
-  offer it as a web font after the reader's own Japanese fonts, so a machine without any
+  offer it for Japanese text as a web font after the reader's own Japanese fonts, so a machine without any
   still shows Japanese rather than empty boxes.
 """
 from __future__ import annotations
@@ -63,9 +63,9 @@ def japanese_font() -> Path:
     return font
 
 
-def static_folder(dest: Path, japanese: bool) -> Path:
-    """Fill ``dest`` with ``mathjax/`` (and ``fonts/ipaexg.ttf`` when ``japanese``) for
-    ``html_static_path``; files already there and the same size are kept."""
+def static_folder(dest: Path) -> Path:
+    """Fill ``dest`` with ``mathjax/`` and ``fonts/ipaexg.ttf`` for ``html_static_path``;
+    files already there and the same size are kept."""
     mathjax = ensure_mathjax()
     pairs = []
     for rel in MATHJAX_FILES:
@@ -73,8 +73,7 @@ def static_folder(dest: Path, japanese: bool) -> Path:
         target = dest / "mathjax" / Path(rel).relative_to("es5")
         pairs += [(f, target / f.relative_to(src)) for f in src.rglob("*") if f.is_file()] if src.is_dir() \
             else [(src, target)]
-    if japanese:
-        pairs.append((japanese_font(), dest / "fonts" / "ipaexg.ttf"))
+    pairs.append((japanese_font(), dest / "fonts" / "ipaexg.ttf"))
     for src, target in pairs:
         if not target.is_file() or target.stat().st_size != src.stat().st_size:
             target.parent.mkdir(parents=True, exist_ok=True)

@@ -14,7 +14,8 @@ The argument names one or more scene files beside the page; ``:shadings:`` and
 *variant*, and a switch under the figure shows one variant at a time. ``:break:`` names
 a "break it" entry (:mod:`renderer.breakages`) applied to our render only;
 ``:reference: vtk-native`` forces VTK's own lighting; ``:depth:`` adds the depth
-buffers. Each variant shows ours | VTK | the ΔE2000 map with its colour bar, a wipe
+buffers; ``:expect: fail`` says the figure is meant to differ from VTK (a "break it"
+figure or a native reference implies it). Each variant shows ours | VTK | the ΔE2000 map with its colour bar, a wipe
 slider that lays ours over VTK's, the metrics and verdict, the scene file and the
 command that reproduces it. All words are generated in the page's language
 (:mod:`lessons.site.i18n`); the images carry none.
@@ -37,7 +38,7 @@ from lessons.site import record
 from lessons.site.cache import ROOT, cached, figure_key, source_files
 from lessons.site.i18n import _
 from lessons.site.images import DEPTH_VMAX_LSB, colour_bar_stops, depth_metrics, write_figure_images
-from lessons.site.measure import FigureSpec, as_expected, command, load, measure_figure, verdict
+from lessons.site.measure import EXPECTATIONS, FigureSpec, as_expected, command, load, measure_figure, verdict
 
 
 def shading_label(name: str) -> str:
@@ -48,32 +49,52 @@ def model_label(name: str) -> str:
     return {"vtk": _("VTK's lighting"), "opengl": _("OpenGL (Blinn)"), "classic": _("the course's (Phong r·v)")}[name]
 
 
-def transparency_label(name: str) -> str:
-    return {"oit": _("order-independent blend"), "depth_peeling": _("depth peeling"),
-            "sorted": _("sorted, back to front")}[name]
+def light_kind(light) -> str:
+    if not light.positional:
+        return "directional"
+    return "spot" if light.cone_angle < 90 else "point"
+
+
+def colour_name(rgb) -> str:
+    """"white" for a grey light, else the name of its strongest channel."""
+    rgb = [float(c) for c in rgb]
+    return "white" if max(rgb) - min(rgb) < 0.1 else ("red", "green", "blue")[rgb.index(max(rgb))]
+
+
+AXES = {
+    "shading": (lambda s: "+".join(sorted({o.shading for o in s.objects})),
+                lambda v: " + ".join(shading_label(x) for x in v.split("+"))),
+    "model": (lambda s: "+".join(sorted({o.material.model for o in s.objects})),
+              lambda v: " + ".join(model_label(x) for x in v.split("+"))),
+    "projection": (lambda s: "parallel" if s.camera.parallel else "perspective",
+                   lambda v: {"parallel": _("parallel projection"), "perspective": _("perspective projection")}[v]),
+    "lights": (lambda s: "+".join(light_kind(li) for li in s.lights if li.on),
+               lambda v: " + ".join({"directional": _("directional light"), "point": _("point light"),
+                                     "spot": _("spot light")}[x] for x in v.split("+"))),
+    "colour": (lambda s: "+".join(colour_name(li.gl_diffuse) for li in s.lights if li.on),
+               lambda v: " + ".join({"white": _("white light"), "red": _("red light"), "green": _("green light"),
+                                     "blue": _("blue light")}[x] for x in v.split("+"))),
+    "transparency": (lambda s: s.render.transparency if any(o.material.opacity < 1 for o in s.objects) else "opaque",
+                     lambda v: {"oit": _("order-independent blend"), "depth_peeling": _("depth peeling"),
+                                "sorted": _("sorted, back to front"), "opaque": _("opaque")}[v]),
+    "specular": (lambda s: "separate" if s.render.separate_specular else "single",
+                 lambda v: {"separate": _("separate specular colour"), "single": _("single colour")}[v]),
+    "triangles": (lambda s: sum(o.mesh.n_triangles for o in s.objects),
+                  lambda v: _("{n} triangles").format(n=f"{v:,}")),
+}
+"""What can tell one variant of a figure from another: name → (value of a scene, label of a value).
+A variant's label names the axes whose values differ between the figure's variants."""
 
 
 def describe(scene) -> dict:
-    """What can tell one variant from another: shading, model, transparency, triangles, image size."""
-    objs = scene.objects
-    return {"shading": "+".join(sorted({o.shading for o in objs})),
-            "model": "+".join(sorted({o.material.model for o in objs})),
-            "transparency": scene.render.transparency if any(o.material.opacity < 1 for o in objs) else "",
-            "triangles": sum(o.mesh.n_triangles for o in objs)}
+    """The value of every axis of :data:`AXES` for ``scene`` (JSON-able)."""
+    return {name: value(scene) for name, (value, _label) in AXES.items()}
 
 
 def variant_labels(descriptions: list[dict]) -> list[str]:
     """One label per variant, naming only what differs between the variants (in the page's language)."""
-    def word(key, value):
-        if key == "shading":
-            return " + ".join(shading_label(v) for v in value.split("+"))
-        if key == "model":
-            return " + ".join(model_label(v) for v in value.split("+"))
-        if key == "transparency":
-            return transparency_label(value) if value else _("opaque")
-        return _("{n} triangles").format(n=f"{value:,}")
-    keys = [k for k in ("shading", "model", "transparency", "triangles") if len({d[k] for d in descriptions}) > 1]
-    return [" · ".join(word(k, d[k]) for k in keys) or _("figure") for d in descriptions]
+    keys = [k for k in AXES if len({d[k] for d in descriptions}) > 1]
+    return [" · ".join(AXES[k][1](d[k]) for k in keys) or _("figure") for d in descriptions]
 
 
 def percent(fraction: float) -> str:
@@ -150,7 +171,8 @@ class ScanlabFigure(SphinxDirective):
     optional_arguments = 20
     has_content = True
     option_spec = {"shadings": directives.unchanged, "models": directives.unchanged, "break": directives.unchanged,
-                   "reference": directives.unchanged, "depth": directives.flag}
+                   "reference": directives.unchanged, "depth": directives.flag,
+                   "expect": lambda v: directives.choice(v, EXPECTATIONS)}
 
     def specs(self) -> list[FigureSpec]:
         folder = Path(self.env.doc2path(self.env.docname)).parent
@@ -158,7 +180,8 @@ class ScanlabFigure(SphinxDirective):
         models = self.options.get("models", "").split() or [None]
         brk = self.options.get("break") or None
         reference = self.options.get("reference") or None
-        return [FigureSpec(str(folder / name), s, mo, brk, reference)
+        expect = self.options.get("expect")
+        return [FigureSpec(str(folder / name), s, mo, brk, reference, expect)
                 for name in self.arguments for s in shadings for mo in models]
 
     def run(self) -> list[nodes.Node]:
@@ -173,7 +196,7 @@ class ScanlabFigure(SphinxDirective):
         specs = self.specs()
         results = [measure_variant(spec, root, depth) for spec in specs]
         labels = variant_labels([r["describe"] for _k, r in results])
-        figure_id = "figure-" + "-".join([Path(self.arguments[0]).stem] + ([brk] if brk else []))
+        figure_id = "figure-" + "-".join([Path(self.arguments[0]).stem] + [v for v in (brk, specs[0].reference) if v])
         for path in {s.scene for s in specs}:
             self.env.note_dependency(path)
             record.scene(self.env, path)
@@ -202,6 +225,8 @@ class ScanlabFigure(SphinxDirective):
                        f'{html.escape(BREAKAGES[brk].label[self.lang()])}</div>'
                        f'<div class="scanlab-rule">{html.escape(_("The rule"))}: '
                        f'{html.escape(BREAKAGES[brk].rule[self.lang()])}</div>')
+        elif specs[0].expect == "fail":
+            heading = f'<div class="scanlab-break-title">{html.escape(_("Meant to differ from VTK"))}</div>'
         opening = nodes.raw("", f'<figure class="scanlab-figure {kind}" id="{figure_id}">{heading}{switch}'
                                 + "".join(parts), format="html")
         caption = nodes.container(classes=["scanlab-caption"])

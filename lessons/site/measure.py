@@ -31,6 +31,7 @@ class FigureSpec:
     shading, model : overrides for every object (None: as the file says).
     breakage : a key of :data:`renderer.breakages.BREAKAGES`, applied to our render only.
     reference : None (VTK's render the comparison run picks) or "vtk-native".
+    expectation : "pass" or "fail" to state the verdict a lesson promises (None: :attr:`expect`).
     """
 
     scene: str
@@ -38,10 +39,14 @@ class FigureSpec:
     model: str | None = None
     breakage: str | None = None
     reference: str | None = None
+    expectation: str | None = None
 
     @property
     def expect(self) -> str:
-        """"fail" for a "break it" figure or a forced native reference of a textbook model, else "pass"."""
+        """``expectation`` when given; else "fail" for a "break it" figure or a forced native
+        reference (VTK's lighting against a textbook model), "pass" otherwise."""
+        if self.expectation:
+            return self.expectation
         return "fail" if self.breakage or self.reference else "pass"
 
 

@@ -2,7 +2,8 @@
 
 - ``config-inited``: Japanese pages index their text with Janome and the course's
   terms (:mod:`lessons.site.search`).
-- ``builder-inited``: MathJax and the Japanese font join the static files (:mod:`lessons.site.assets`).
+- ``builder-inited``: MathJax and a Japanese font join the static files (:mod:`lessons.site.assets`);
+  English pages need the font too, for the link to the Japanese ones.
 - ``html-page-context``: every page gets a link to the same page in the other language
   (the site is published as ``en/`` and ``ja/`` side by side).
 - ``env-updated``: the build stops if any figure's verdict is not the one its lesson
@@ -44,10 +45,8 @@ def on_config_inited(app, config) -> None:
 def on_builder_inited(app) -> None:
     if app.builder.format != "html":
         return
-    extra = static_folder(Path(app.doctreedir) / "static-extra", japanese=is_japanese(app.config))
+    extra = static_folder(Path(app.doctreedir) / "static-extra")
     app.config.html_static_path = [*app.config.html_static_path, str(extra)]
-    if is_japanese(app.config):
-        app.add_css_file("scanlab-ja.css")
 
 
 def other_language(language: str) -> str:
