@@ -31,7 +31,8 @@ LANGUAGES = ("en", "ja")
 NAMES = {"en": "English", "ja": "日本語"}
 
 _ANSI = re.compile(r"\x1b\[[0-9;]*m")
-_STEP = re.compile(r"^(reading sources|writing output)\.\.\. \[\s*(\d+)%\]", re.M)
+_STEP = re.compile(r"^(reading sources|writing output)\.\.\. \[\s*(\d+)%\] (?!\S*LC_MESSAGES)", re.M)
+"""Sphinx's progress lines (not those of compiling the .po catalogs, which also say "writing output")."""
 
 
 class BuildFailed(Exception):

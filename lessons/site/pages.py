@@ -1,7 +1,7 @@
 """Build-wide steps of the lesson site: language settings, the language switch, checks, copies.
 
-- ``config-inited``: Japanese pages index their text with Janome and the course's
-  terms (:mod:`lessons.site.search`).
+- ``config-inited``: Japanese pages get a Japanese site title and index their text with
+  Janome and the course's terms (:mod:`lessons.site.search`).
 - ``builder-inited``: MathJax and a Japanese font join the static files (:mod:`lessons.site.assets`);
   English pages need the font too, for the link to the Japanese ones.
 - ``html-page-context``: every page gets a link to the same page in the other language
@@ -39,6 +39,7 @@ def on_config_inited(app, config) -> None:
     if not config.scanlab_figure_cache:  # sphinx-build run by hand: beside the doctrees
         config.scanlab_figure_cache = str(Path(app.doctreedir).parent / "scanlab-figures")
     if is_japanese(config):
+        config.html_title = config.project = "scanlab レッスン"
         config.html_search_options = search_options(Path(app.doctreedir) / "janome-terms.csv")
 
 
