@@ -102,8 +102,9 @@ def forget(doctrees: Path) -> None:
     (doctrees / "environment.pickle").unlink(missing_ok=True)
 
 
-def build_language(lang: str, out: Path, cache: Path, jobs: int, progress: Progress) -> set[str]:
-    """Build one language into ``out/lang``; return the cache keys of the figures it shows."""
+def build_language(lang: str, out: Path, cache: Path, jobs: int, progress: Progress, source: Path = LESSONS) -> set[str]:
+    """Build one language of the Sphinx project ``source`` into ``out/lang``; return the cache
+    keys of the figures it shows."""
     from sphinx.application import Sphinx
     from sphinx.errors import SphinxError
     from sphinx.util import console
@@ -115,8 +116,8 @@ def build_language(lang: str, out: Path, cache: Path, jobs: int, progress: Progr
     warnings = io.StringIO()
     doctrees = cache / "doctrees" / lang
     try:
-        with patch_docutils(str(LESSONS)), docutils_namespace():  # as sphinx-build: one build's registrations
-            app = Sphinx(str(LESSONS), str(LESSONS), str(out / lang), str(doctrees), "html",
+        with patch_docutils(str(source)), docutils_namespace():  # as sphinx-build: one build's registrations
+            app = Sphinx(str(source), str(source), str(out / lang), str(doctrees), "html",
                          confoverrides={"language": lang, "scanlab_figure_cache": str(cache / "figures")},
                          status=progress, warning=warnings, freshenv=False, warningiserror=True, parallel=jobs)
             app.build()
@@ -135,8 +136,10 @@ def build_language(lang: str, out: Path, cache: Path, jobs: int, progress: Progr
 
 
 def build_site(out: Path, languages: tuple[str, ...] = LANGUAGES, cache: Path | None = None, jobs: int = 2,
-               stream=sys.stdout) -> Path:
-    """Build the site into ``out`` (see the module docstring); return ``out/index.html``."""
+               stream=sys.stdout, source: Path = LESSONS) -> Path:
+    """Build the site into ``out`` (see the module docstring); return ``out/index.html``.
+
+    ``source`` is the Sphinx project (``lessons/``; the tests build small ones of their own)."""
     from lab.atomic import write_text
     from lessons.site.cache import prune
 
@@ -145,7 +148,7 @@ def build_site(out: Path, languages: tuple[str, ...] = LANGUAGES, cache: Path | 
     keys: set[str] = set()
     for i, lang in enumerate(languages):
         progress.start(i)
-        keys |= build_language(lang, out, cache, jobs, progress)
+        keys |= build_language(lang, out, cache, jobs, progress, source)
     progress.index, progress.fraction = len(languages), 0.0
     progress.draw("done")
     stream.write("\n")

@@ -15,7 +15,12 @@ CATALOG = "scanlab"
 LOCALE_DIR = Path(__file__).resolve().parents[1] / "locales"
 """``lessons/locales``: the Japanese .po files of the pages and of :data:`CATALOG`."""
 
-_ = get_translation(CATALOG)
+_translate = get_translation(CATALOG)
+
+
+def _(message: str) -> str:
+    """``message`` in the build's language (as it is, outside a Sphinx build)."""
+    return str(_translate(message))
 
 
 def compile_catalog(language: str, locale_dir: Path = LOCALE_DIR) -> Path | None:
