@@ -20,7 +20,6 @@ from __future__ import annotations
 import argparse
 import html
 import io
-import json
 import re
 import sys
 import time
@@ -154,9 +153,9 @@ def build_site(out: Path, languages: tuple[str, ...] = LANGUAGES, cache: Path | 
     stream.write("\n")
     if set(languages) == set(LANGUAGES):  # every page seen: figures no page shows are dropped
         prune(cache / "figures", keys)
-    index = out / "index.html"
-    write_text(index, chooser_page())
-    return index
+    page = out / "index.html"
+    write_text(page, chooser_page())
+    return page
 
 
 # ------------------------------------------------------------------ the command line
@@ -184,6 +183,7 @@ def cmd_build(args) -> int:
 
 def cmd_measure(args) -> int:
     """Measure one figure as a lesson page does and write its images and metrics."""
+    from compare.report import write_json
     from lessons.site.images import write_figure_images
     from lessons.site.measure import FigureSpec, measure_figure, verdict
 
@@ -192,7 +192,7 @@ def cmd_measure(args) -> int:
     out.mkdir(parents=True, exist_ok=True)
     m = measure_figure(spec)
     names = write_figure_images(m, out)
-    (out / "metrics.json").write_text(json.dumps(m.metrics, indent=2) + "\n")
+    write_json(out / "metrics.json", m.metrics)
     de = m.metrics["delta_e_2000"]
     print(f"{args.scene}{' broken: ' + args.breakage if args.breakage else ''}: mean ΔE2000 {de['mean']:.3f}, "
           f"p99.9 {de['p999']:.2f}, over 1: {100 * m.metrics['pixels_over_1']:.3f} %, coverage mismatch "

@@ -75,7 +75,17 @@ def static_folder(dest: Path) -> Path:
             else [(src, target)]
     pairs.append((japanese_font(), dest / "fonts" / "ipaexg.ttf"))
     for src, target in pairs:
-        if not target.is_file() or target.stat().st_size != src.stat().st_size:
-            target.parent.mkdir(parents=True, exist_ok=True)
-            shutil.copyfile(src, target)
+        copy_file(src, target)
     return dest
+
+
+def copy_file(src: Path, target: Path) -> None:
+    """Copy ``src`` to ``target`` (folders made), atomically (:func:`lab.atomic.atomic_file`);
+    a target of the same size is taken to be the same file and kept."""
+    from lab.atomic import atomic_file
+
+    if target.is_file() and target.stat().st_size == src.stat().st_size:
+        return
+    target.parent.mkdir(parents=True, exist_ok=True)
+    with atomic_file(target) as f:
+        f.write(src.read_bytes())

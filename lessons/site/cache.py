@@ -19,6 +19,8 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Callable
 
+from lab.atomic import write_text
+
 FORMAT = 1
 """Bumped when the layout of an entry changes."""
 
@@ -62,7 +64,8 @@ def cached(root: Path, key: str, make: Callable[[Path], dict]) -> tuple[Path, di
     work = Path(tempfile.mkdtemp(dir=root, prefix=f".{key}."))
     try:
         result = make(work)
-        (work / RESULT).write_text(json.dumps(result, indent=1, sort_keys=True) + "\n")
+        path = work / RESULT
+        write_text(path, json.dumps(result, indent=1, sort_keys=True) + "\n")
         try:
             os.rename(work, entry)
         except OSError:  # another process made it first: theirs is as good as ours

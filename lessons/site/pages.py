@@ -13,13 +13,12 @@
 """
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 from sphinx.errors import SphinxError
 
 from lessons.site import record
-from lessons.site.assets import static_folder
+from lessons.site.assets import copy_file, static_folder
 from lessons.site.search import search_options
 
 LANGUAGES = {"en": "English", "ja": "日本語"}
@@ -80,12 +79,9 @@ def on_build_finished(app, exception) -> None:
     out = Path(app.outdir)
     cache = Path(app.config.scanlab_figure_cache)
     for key in sorted(figure_keys(app.env)):
-        target = out / "_figures" / key
-        if not target.is_dir():
-            shutil.copytree(cache / key, target, ignore=shutil.ignore_patterns("result.json"))
-    srcdir = Path(app.srcdir)
+        for image in (cache / key).glob("*.png"):
+            copy_file(image, out / "_figures" / key / image.name)
+    srcdir = Path(app.srcdir).resolve()
     for paths in record.all_of(app.env, "scanlab_scenes").values():
         for path in paths:
-            rel = Path(path).resolve().relative_to(srcdir.resolve())
-            (out / "_scenes" / rel).parent.mkdir(parents=True, exist_ok=True)
-            shutil.copyfile(path, out / "_scenes" / rel)
+            copy_file(Path(path), out / "_scenes" / Path(path).resolve().relative_to(srcdir))

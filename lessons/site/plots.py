@@ -93,12 +93,14 @@ def draw(kind: str, specs: list[FigureSpec], path: Path, japanese: bool) -> None
     from matplotlib.figure import Figure
     from matplotlib.font_manager import FontProperties
 
+    from lab.atomic import atomic_file
     from lessons.site.assets import japanese_font
 
     font = FontProperties(fname=str(japanese_font())) if japanese else FontProperties()
     fig = Figure(figsize=(7.2, 3.6), dpi=100, layout="constrained")
     PLOTS[kind](specs, fig.add_subplot(), font, "ja" if japanese else "en")
-    fig.savefig(path, format="png", metadata={"Software": None})
+    with atomic_file(path) as f:
+        fig.savefig(f, format="png", metadata={"Software": None})
 
 
 class ScanlabPlot(SphinxDirective):

@@ -27,12 +27,14 @@ def course_terms(path: Path = TERMS) -> list[str]:
     return [line for line in lines if line and not line.startswith("#")]
 
 
-def user_dictionary(dest: Path, terms: list[str] | None = None) -> Path:
-    """Write the terms as a Janome user dictionary (MeCab IPADIC CSV) to ``dest``; return it."""
+def user_dictionary(path: Path, terms: list[str] | None = None) -> Path:
+    """Write the terms as a Janome user dictionary (MeCab IPADIC CSV) to ``path``; return it."""
+    from lab.atomic import write_text
+
     rows = [f"{t},{NOUN_ID},{NOUN_ID},{COST},名詞,一般,*,*,*,*,{t},*,*" for t in (terms or course_terms())]
-    dest.parent.mkdir(parents=True, exist_ok=True)
-    dest.write_text("\n".join(rows) + "\n", encoding="utf-8")
-    return dest
+    path.parent.mkdir(parents=True, exist_ok=True)
+    write_text(path, "\n".join(rows) + "\n")
+    return path
 
 
 def search_options(dest: Path) -> dict:
