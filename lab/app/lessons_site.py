@@ -101,6 +101,17 @@ def forget(doctrees: Path) -> None:
     (doctrees / "environment.pickle").unlink(missing_ok=True)
 
 
+def safe_jobs(jobs: int) -> int:
+    """``jobs``, or 1 if this process has already run the renderer's parallel kernels.
+
+    Sphinx reads pages in forked processes; a process whose OpenMP threads (numba's threading
+    layer) have started cannot fork safely ("fork() called from a process already using GNU
+    OpenMP" ends the child). ``scanlab lessons build`` starts clean; a caller that has
+    rendered before (a test session) gets one reader, or should run the command instead."""
+    parallel = sys.modules.get("numba.np.ufunc.parallel")
+    return 1 if parallel is not None and getattr(parallel, "_is_initialized", False) else jobs
+
+
 def build_language(lang: str, out: Path, cache: Path, jobs: int, progress: Progress, source: Path = LESSONS) -> set[str]:
     """Build one language of the Sphinx project ``source`` into ``out/lang``; return the cache
     keys of the figures it shows."""
@@ -118,7 +129,8 @@ def build_language(lang: str, out: Path, cache: Path, jobs: int, progress: Progr
         with patch_docutils(str(source)), docutils_namespace():  # as sphinx-build: one build's registrations
             app = Sphinx(str(source), str(source), str(out / lang), str(doctrees), "html",
                          confoverrides={"language": lang, "scanlab_figure_cache": str(cache / "figures")},
-                         status=progress, warning=warnings, freshenv=False, warningiserror=True, parallel=jobs)
+                         status=progress, warning=warnings, freshenv=False, warningiserror=True,
+                         parallel=safe_jobs(jobs))
             app.build()
     except FigureCheckError as exc:
         forget(doctrees)

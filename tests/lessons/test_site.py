@@ -11,13 +11,15 @@ from __future__ import annotations
 import io
 import os
 import re
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 from PIL import Image
 
-from lab.app.lessons_site import LESSONS, build_site
+from lab.app.lessons_site import LESSONS
 
 from ..browser import broken_images, open_browser, watch
 
@@ -32,9 +34,14 @@ def figure_cache() -> Path:
 
 @pytest.fixture(scope="module")
 def site(tmp_path_factory):
+    """The site, built by the command as a user runs it (in a fresh process: Sphinx forks its
+    two readers, which a test session that has already rendered must not do)."""
     out = tmp_path_factory.mktemp("lessons")
-    index = build_site(out, cache=figure_cache(), stream=io.StringIO())
-    return index.parent
+    done = subprocess.run([sys.executable, "-m", "lab", "lessons", "build", "--out", str(out),
+                           "--cache", str(figure_cache())], capture_output=True, text=True, timeout=900)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert done.stdout.strip().splitlines()[-1] == f"lesson site: {(out / 'index.html').resolve()}"
+    return out
 
 
 @pytest.fixture(scope="module")

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from lab.app.cli import main
-from lab.app.lessons_site import LESSONS, BuildFailed, Progress, build_site, chooser_page
+from lab.app.lessons_site import LESSONS, BuildFailed, Progress, build_site, chooser_page, safe_jobs
 
 CONF = f"""
 exec(open({str(LESSONS / 'conf.py')!r}).read())
@@ -90,6 +90,14 @@ def test_a_lesson_that_names_missing_code_fails_the_build(tmp_path):
     with pytest.raises(BuildFailed, match="defines no scanline_fill") as failure:
         build(tmp_path, src)
     assert failure.value.status == 1
+
+
+def test_a_process_that_has_run_the_renderer_reads_pages_in_one_process():
+    from lab.loading import load_scene
+    from renderer import render
+
+    render(load_scene("cube"))  # numba's OpenMP threads start: forking is no longer safe
+    assert safe_jobs(2) == 1
 
 
 def test_the_progress_bar_follows_reading_and_writing_but_not_the_catalogs():
