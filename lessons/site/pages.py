@@ -19,7 +19,7 @@ from sphinx.errors import SphinxError
 
 from lessons.site import record
 from lessons.site.assets import copy_file, static_folder
-from lessons.site.search import search_options
+from lessons.site.search import TERMS, search_options
 
 LANGUAGES = {"en": "English", "ja": "日本語"}
 
@@ -39,7 +39,8 @@ def on_config_inited(app, config) -> None:
         config.scanlab_figure_cache = str(Path(app.doctreedir).parent / "scanlab-figures")
     if is_japanese(config):
         config.html_title = config.project = "scanlab レッスン"
-        config.html_search_options = search_options(Path(app.doctreedir) / "janome-terms.csv")
+        config.html_search_options = search_options(TERMS.with_suffix(".csv"))  # beside the terms: one path,
+        # whatever the output folder, so that two builds of the site are the same bytes
 
 
 def on_builder_inited(app) -> None:
