@@ -22,7 +22,7 @@ from lab.app.exercises.diagnoses.registry import Finding
 
 LESSONS = {
     "01-polygon-model": {"en": "The polygon model", "ja": "ポリゴンモデル"},
-    "02-transforms": {"en": "Homogeneous coordinates and transforms", "ja": "同次座標と座標変換"},
+    "02-homogeneous": {"en": "Homogeneous coordinates and transforms", "ja": "同次座標と座標変換"},
     "03-camera": {"en": "The camera", "ja": "カメラ"},
     "04-clipping": {"en": "Clipping and the window", "ja": "クリッピングとウィンドウ変換"},
     "05-scanline": {"en": "Drawing a triangle: the scanline fill", "ja": "三角形の描画: スキャンライン"},

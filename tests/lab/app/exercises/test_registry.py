@@ -60,3 +60,11 @@ def test_no_module_outside_the_catalogue_branches_on_an_exercise_name():
             if isinstance(node, ast.Compare):
                 names = [c.value for c in [node.left, *node.comparators] if isinstance(c, ast.Constant)]
                 assert not set(names) & set(ALL), f"{path.name}:{node.lineno} branches on an exercise name"
+
+
+def test_the_lessons_are_the_lesson_site_s_folders():
+    """An exercise names its lesson by the folder the lesson site builds it from (lessons/NN-name/)."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[4] / "lessons"
+    assert sorted(LESSONS) == sorted(p.name for p in root.iterdir() if p.is_dir() and p.name[:2].isdigit())
