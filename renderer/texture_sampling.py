@@ -4,7 +4,8 @@ Texture space: s to the right, t up, (0, 0) the bottom-left corner of the image,
 (i, j) covering [i/W, (i+1)/W] × [j/H, (j+1)/H] with its centre at ((i+0.5)/W, (j+0.5)/H).
 All of a scene's textures live in one flat uint8 array (``texels``, (Σ H·W, 3), the 8-bit
 values VTK uploads), each object's starting at ``offset[o]``, rows from the bottom (see
-:mod:`lab.texture`). Colours come out as value/255.
+:mod:`lab.texture`): :class:`Textures`, built once per frame by :func:`texture_table`.
+Colours come out as value/255.
 
 - nearest: texel (⌊s·W⌋, ⌊t·H⌋);
 - linear: the four texels around (s·W − ½, t·H − ½), weighted bilinearly — in llvmpipe's
@@ -17,12 +18,60 @@ values VTK uploads), each object's starting at ``offset[o]``, rows from the bott
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from renderer.jit import njit
 
 NEAREST, LINEAR = 0, 1
 REPEAT, CLAMP = 0, 1
+
+
+class Textures(NamedTuple):
+    """Every object's texture (index = object), as the kernels read it.
+
+    textured (O,) bool; offset, width, height (O,) int: where its texels start in
+    ``texels`` and its size; filter (O,) :data:`NEAREST` or :data:`LINEAR`; wrap (O,)
+    :data:`REPEAT` or :data:`CLAMP`; texels (Σ H·W, 3) uint8, all textures one after the other.
+    """
+
+    textured: np.ndarray
+    offset: np.ndarray
+    width: np.ndarray
+    height: np.ndarray
+    filter: np.ndarray
+    wrap: np.ndarray
+    texels: np.ndarray
+
+
+def texture_table(scene) -> Textures:
+    """All objects' textures in one flat (Σ H·W, 3) uint8 array (their ``texels_8bit``), and
+    per object: textured flag, offset, width, height, filter and wrap codes.
+
+    Only textured objects take rows (the kernels sample nothing for the others). With one
+    textured object the flat array is a view of its texels, not a copy: a 2048×1024 texture
+    copied every frame cost more than shading the frame."""
+    textured, offset, width, height, filt, wrap, chunks = [], [], [], [], [], [], []
+    start = 0
+    for obj in scene.objects:
+        t = obj.texture
+        textured.append(t is not None)
+        h, w = (t.texels.shape[:2]) if t is not None else (1, 1)
+        offset.append(start if t is not None else 0)
+        width.append(w)
+        height.append(h)
+        filt.append(LINEAR if t is not None and t.filter == "linear" else NEAREST)
+        wrap.append(CLAMP if t is not None and t.wrap == "clamp" else REPEAT)
+        if t is not None:
+            chunks.append(t.texels_8bit.reshape(-1, 3))
+            start += h * w
+    if not chunks:
+        texels = np.full((1, 3), 255, np.uint8)
+    else:
+        texels = chunks[0] if len(chunks) == 1 else np.concatenate(chunks)
+    as_int = lambda v: np.array(v, np.int64)  # noqa: E731
+    return Textures(np.array(textured, np.bool_), as_int(offset), as_int(width), as_int(height), as_int(filt),
+                    as_int(wrap), texels)
 
 
 @njit(cache=True, inline="always")
@@ -65,3 +114,10 @@ def sample(texels, offset, width, height, filter_mode, wrap, s, t, out):
         h0 = t00 + (((t10 - t00) * wa + 128) >> 8)
         h1 = t01 + (((t11 - t01) * wa + 128) >> 8)
         out[c] = (h0 + (((h1 - h0) * wb + 128) >> 8)) / 255.0
+
+
+@njit(cache=True, inline="always")
+def sample_texture(textures, o, s, t, out):
+    """Object ``o``'s texture at (s, t) into ``out`` (3,): :func:`sample` on its part of ``textures``."""
+    sample(textures.texels, textures.offset[o], textures.width[o], textures.height[o], textures.filter[o],
+           textures.wrap[o], s, t, out)

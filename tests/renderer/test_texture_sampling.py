@@ -1,7 +1,7 @@
 """Texture sampling: which texel nearest picks, how linear blends, how repeat and clamp wrap."""
 import numpy as np
 
-from renderer.texture import CLAMP, LINEAR, NEAREST, REPEAT, sample
+from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, sample
 
 # a 2×2 8-bit texture, rows from the bottom: texel (0,0) = [10, 20, 30], (1,0) = [110, 120, 130], …
 TEX = np.array([[10, 20, 30], [110, 120, 130], [210, 220, 230], [50, 60, 70]], dtype=np.uint8)
