@@ -27,6 +27,7 @@ import numpy as np
 from renderer.jit import njit, prange
 
 from renderer.bands import shading_bands
+from renderer.raster import EMPTY
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import reflect
 from renderer.texture_sampling import sample_texture
@@ -216,7 +217,7 @@ def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands
         for row in range(band, height, n_bands):
             for col in range(width):
                 k = frags.tri_index[row, col]
-                if k < 0:
+                if k == EMPTY:
                     for c in range(3):
                         rgb[row, col, c] = background[c]
                     continue

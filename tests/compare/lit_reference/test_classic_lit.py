@@ -75,3 +75,52 @@ def test_classic_vectorised_equals_per_point_loop(random_scene):
     assert fast.shape == (1000, 3)
     np.testing.assert_allclose(fast, slow, rtol=0, atol=1e-12)
     assert (fast == 1).any() and (fast < 1).all(axis=1).any()
+
+
+# ---------------------------------------------------------------- the model's room --
+
+def classic_object():
+    from lab.scene import Material, SceneObject
+    from lab.shapes import quad
+
+    return SceneObject(mesh=quad(1.0), material=Material(model="classic", color=(0.6, 0.4, 0.2), ambient=0.5,
+                                                         diffuse=0.5, specular=0.8, specular_power=4.0))
+
+
+def scene_with_ambient(ambient):
+    from lab.scene import Camera, Image, RenderSettings, Scene
+
+    return Scene(image=Image(), camera=Camera(), lights=(), objects=(), render=RenderSettings(ambient=ambient))
+
+
+def test_lit_is_the_course_formula_with_the_scenes_ambient_light():
+    """The straight-on case above through the room: (1, 1, .92), and no secondary colour."""
+    from compare.lit_reference.classic_lit import lit
+
+    rgb, secondary = lit(ON_AXIS, UP, classic_object(), scene_with_ambient((0.2, 0.2, 0.2)),
+                         [directional([0, 0, 1], intensity_rgb=WHITE)])
+    np.testing.assert_allclose(rgb, [[1.0, 1.0, 0.92]])
+    assert secondary is None
+
+
+def test_the_vtk_property_maps_one_to_one():
+    """O·A, Ka; O, Kd; white, Ks; n."""
+    from compare.lit_reference.classic_lit import vtk_property
+
+    from lab.scene import Material, SceneObject
+    from lab.shapes import quad
+
+    m = Material(model="classic", color=(0.6, 0.4, 0.2), ambient=0.1, diffuse=0.7, specular=0.3, specular_power=9.0)
+    v = vtk_property(SceneObject(mesh=quad(1.0), material=m), scene_with_ambient((0.5, 0.5, 0.5)))
+    np.testing.assert_allclose(v["ambient_color"], [0.3, 0.2, 0.1])
+    np.testing.assert_allclose(v["diffuse_color"], [0.6, 0.4, 0.2])
+    np.testing.assert_allclose(v["specular_color"], [1, 1, 1])
+    assert (v["ambient"], v["diffuse"], v["specular"], v["power"]) == (0.1, 0.7, 0.3, 9.0)
+
+
+def test_the_glsl_lights_only_the_front_and_never_touches_the_secondary():
+    from compare.lit_reference.classic_lit import glsl
+
+    code = glsl(classic_object(), scene_with_ambient((1, 1, 1)), [directional([0, 0, 1])])
+    assert "if (att > 0.0 && ndl > 0.0)" in code and "vec3 R = 2.0 * ndl * n - L;" in code
+    assert "secondary" not in code

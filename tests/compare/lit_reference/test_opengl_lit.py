@@ -135,3 +135,52 @@ def test_opengl_vectorised_equals_per_point_loop(random_scene, local_viewer):
     assert fast.shape == (1000, 3)
     np.testing.assert_allclose(fast, slow, rtol=0, atol=1e-12)
     assert (fast == 1).any() and (fast < 1).all(axis=1).any()   # some channels clamp, some points don't
+
+
+# ---------------------------------------------------------------- the model's room --
+
+def scene_with(**render):
+    from lab.scene import Camera, Image, Light, RenderSettings, Scene
+
+    return Scene(image=Image(), camera=Camera(), objects=(), render=RenderSettings(**render),
+                 lights=(Light(ambient_color=(0.1, 0.1, 0.1)), Light(ambient_color=(0.5, 0.5, 0.5), on=False)))
+
+
+def gl_object(**material):
+    from lab.scene import Material, SceneObject
+    from lab.shapes import quad
+
+    return SceneObject(mesh=quad(1.0), material=Material(model="opengl", **material))
+
+
+def test_lit_keeps_the_specular_apart_only_when_the_scene_asks():
+    """Light straight on: primary .2·Ma + Md, secondary Ms (each clamped); single colour: the sum, clamped."""
+    from compare.lit_reference.opengl_lit import lit
+
+    obj = gl_object(color=(0.5, 0.25, 0.25), specular_color=(0.25, 0.25, 0.25), shininess=10.0)
+    light = directional([0, 0, 1], ambient=ZERO, diffuse=WHITE, specular=WHITE)
+    rgb, secondary = lit(ON_AXIS, UP, obj, scene_with(separate_specular=True), [light])
+    np.testing.assert_allclose(rgb, [[0.6, 0.3, 0.3]])
+    np.testing.assert_allclose(secondary, [[0.25, 0.25, 0.25]])
+    rgb, secondary = lit(ON_AXIS, UP, obj, scene_with(), [light])
+    np.testing.assert_allclose(rgb, [[0.85, 0.55, 0.55]])
+    assert secondary is None
+
+
+def test_the_nearest_vtk_property_folds_the_ambient_lights_into_the_ambient_colour():
+    """(Ga + ΣLa of the lights that are on)·Ma = (0.2 + 0.1)·Ma, coefficients 1, power shininess/4."""
+    from compare.lit_reference.opengl_lit import vtk_property
+
+    v = vtk_property(gl_object(color=(1.0, 0.5, 0.0), shininess=40.0), scene_with())
+    np.testing.assert_allclose(v["ambient_color"], [0.3, 0.15, 0.0])
+    assert (v["ambient"], v["diffuse"], v["specular"], v["power"]) == (1.0, 1.0, 1.0, 10.0)
+
+
+def test_the_glsl_adds_the_secondary_colour_unless_it_is_kept_apart():
+    from compare.lit_reference.opengl_lit import glsl
+
+    obj, light = gl_object(), directional([0, 0, 1])
+    single = glsl(obj, scene_with(), [light])
+    assert "vec3 V = vec3(0.0, 0.0, 1.0);" in single and single.endswith("  c += secondary;\n")
+    separate = glsl(obj, scene_with(separate_specular=True, local_viewer=True), [light])
+    assert "vec3 V = normalize(-P);" in separate and "c += secondary" not in separate
