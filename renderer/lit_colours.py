@@ -37,11 +37,13 @@ def light_vertices(geo, materials, lights, colours):
         o = geo.vert_object[v]
         if materials.shading_path[o] != VERTEX_COLOUR:
             continue
-        n = geo.normals_view[v].copy()
-        length = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+        nx, ny, nz = geo.normals_view[v, 0], geo.normals_view[v, 1], geo.normals_view[v, 2]
+        length = math.sqrt(nx * nx + ny * ny + nz * nz)
         if length > 0.0:
-            n /= length
-        reflect(n, geo.verts_view[v], o, materials, lights, colours[v, :3], colours[v, 3:])
+            nx, ny, nz = nx / length, ny / length, nz / length
+        lit = reflect((nx, ny, nz), geo.verts_view[v], o, materials, lights)
+        for c in range(6):
+            colours[v, c] = lit[c]
 
 
 @njit(cache=True, parallel=True)
@@ -54,10 +56,12 @@ def light_faces(geo, materials, lights, colours):
         o = geo.tri_object[t]
         if materials.shading_path[o] != FACE_COLOUR:
             continue
-        centroid = np.empty(3)
-        for c in range(3):
-            centroid[c] = (verts[triangles[t, 0], c] + verts[triangles[t, 1], c] + verts[triangles[t, 2], c]) / 3.0
-        reflect(geo.face_normals[t], centroid, o, materials, lights, colours[t, :3], colours[t, 3:])
+        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+        centroid = ((verts[a, 0] + verts[b, 0] + verts[c, 0]) / 3.0, (verts[a, 1] + verts[b, 1] + verts[c, 1]) / 3.0,
+                    (verts[a, 2] + verts[b, 2] + verts[c, 2]) / 3.0)
+        lit = reflect(geo.face_normals[t], centroid, o, materials, lights)
+        for k in range(6):
+            colours[t, k] = lit[k]
 
 
 def lit_colours(geo, materials, lights, ws=None) -> LitColours:

@@ -55,8 +55,9 @@ def to_8bit(rgb: np.ndarray) -> np.ndarray:
 
 
 @njit(cache=True, inline="always")
-def fragment_weights(frags, k, l1, l2, out):
-    """Weights of the *source* triangle's vertices at a fragment of clipped triangle ``k``.
+def fragment_weights(frags, k, l1, l2):
+    """Weights ``(w0, w1, w2)`` of the *source* triangle's vertices at a fragment of clipped
+    triangle ``k``.
 
     ``l1, l2`` are screen-space weights of clipped triangle ``k``'s vertices 1 and 2.
     Perspective-correct (``frags.perspective``, what GPUs and VTK do): each is divided by
@@ -64,7 +65,7 @@ def fragment_weights(frags, k, l1, l2, out):
     the course's scanline slides interpolate. Then they are mapped through the clipped
     vertices' own weights in the source triangle.
     """
-    tri_clip, clip_bary = frags.tri_clip, frags.clip_bary
+    tri_clip, cb = frags.tri_clip, frags.clip_bary
     l0 = 1.0 - l1 - l2
     if frags.perspective:
         b0, b1, b2 = l0 / tri_clip[k, 0, 3], l1 / tri_clip[k, 1, 3], l2 / tri_clip[k, 2, 3]
@@ -72,8 +73,9 @@ def fragment_weights(frags, k, l1, l2, out):
         b0, b1, b2 = b0 / s, b1 / s, b2 / s
     else:
         b0, b1, b2 = l0, l1, l2
-    for j in range(3):
-        out[j] = b0 * clip_bary[k, 0, j] + b1 * clip_bary[k, 1, j] + b2 * clip_bary[k, 2, j]
+    return (b0 * cb[k, 0, 0] + b1 * cb[k, 1, 0] + b2 * cb[k, 2, 0],
+            b0 * cb[k, 0, 1] + b1 * cb[k, 1, 1] + b2 * cb[k, 2, 1],
+            b0 * cb[k, 0, 2] + b1 * cb[k, 1, 2] + b2 * cb[k, 2, 2])
 
 
 @njit(cache=True, inline="always")
@@ -126,80 +128,62 @@ class ShadingInputs(NamedTuple):
     lit: tuple
 
 
-WEIGHTS, NORMAL, POSITION, TEXEL, SECONDARY, COLOUR = range(6)
-"""The rows of a shading thread's scratch array (6, 3) (:func:`new_scratch`): source-triangle
-weights, normal, position, texel colour, secondary colour, and the fragment's colour (the
-result of :func:`fragment_colour`). One plain array rather than a NamedTuple: inside a
-``prange`` loop numba loses writes made through a NamedTuple's fields (numba issues #5872,
-#7135), so the loop kernels write only into plain arrays."""
+@njit(cache=True, inline="always")
+def interpolate(w, a, i0, i1, i2, first=0):
+    """``w0·a[i0] + w1·a[i1] + w2·a[i2]`` over columns ``first .. first + 2`` of ``a``, as a 3-tuple."""
+    return (w[0] * a[i0, first] + w[1] * a[i1, first] + w[2] * a[i2, first],
+            w[0] * a[i0, first + 1] + w[1] * a[i1, first + 1] + w[2] * a[i2, first + 1],
+            w[0] * a[i0, first + 2] + w[1] * a[i1, first + 2] + w[2] * a[i2, first + 2])
 
 
 @njit(cache=True, inline="always")
-def new_scratch():
-    """A fresh (6, 3) scratch array (one per band of rows, so threads never share one)."""
-    return np.empty((6, 3))
-
-
-@njit(cache=True, inline="always")
-def interpolate(w, a, i0, i1, i2, out, first=0):
-    """out = w0·a[i0] + w1·a[i1] + w2·a[i2] over columns ``first .. first + 2`` of ``a``."""
-    for c in range(3):
-        out[c] = w[0] * a[i0, first + c] + w[1] * a[i1, first + c] + w[2] * a[i2, first + c]
-
-
-@njit(cache=True, inline="always")
-def normalise(n):
-    length = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+def normalise(x, y, z):
+    """(x, y, z) scaled to unit length; a zero vector stays zero."""
+    length = math.sqrt(x * x + y * y + z * z)
     if length > 0.0:
-        for c in range(3):
-            n[c] /= length
+        return x / length, y / length, z / length
+    return x, y, z
 
 
 @njit(cache=True, inline="always")
-def fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit, scratch):
-    """The linear colour of one fragment of clipped triangle ``k`` with screen-space weights
-    ``l1, l2`` (of its vertices 1 and 2) into ``scratch[COLOUR]``, by its object's shading
-    path (see the module docstring). Only the clipped-triangle tables of ``frags`` (front,
-    tri_clip, clip_bary, clip_source) are read.
+def fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit):
+    """The linear colour ``(r, g, b)`` of one fragment of clipped triangle ``k`` with
+    screen-space weights ``l1, l2`` (of its vertices 1 and 2), by its object's shading path
+    (see the module docstring). Only the clipped-triangle tables of ``frags`` (front,
+    tri_clip, clip_bary, clip_source) are read. Scalars and tuples only: it runs per pixel
+    (measured: writing into the rows of a scratch array instead, taken as views per fragment,
+    made shading 1.5× slower on ``course-phong``).
     """
-    w, n, p = scratch[WEIGHTS], scratch[NORMAL], scratch[POSITION]
-    out, spec, tex = scratch[COLOUR], scratch[SECONDARY], scratch[TEXEL]
-    tris, verts = geo.triangles, geo.verts_view
-    fragment_weights(frags, k, l1, l2, w)
+    tris = geo.triangles
+    w = fragment_weights(frags, k, l1, l2)
     s = frags.clip_source[k]
     o = geo.tri_object[s]
     i0, i1, i2 = tris[s, 0], tris[s, 1], tris[s, 2]
     path = materials.shading_path[o]
     if path == FACE_COLOUR:
-        for c in range(3):
-            out[c] = lit.face[s, c]
-            spec[c] = lit.face[s, 3 + c]
+        r, g, b = lit.face[s, 0], lit.face[s, 1], lit.face[s, 2]
+        sr, sg, sb = lit.face[s, 3], lit.face[s, 4], lit.face[s, 5]
     elif path == VERTEX_COLOUR:
-        interpolate(w, lit.vertex, i0, i1, i2, out)
-        interpolate(w, lit.vertex, i0, i1, i2, spec, 3)
+        r, g, b = interpolate(w, lit.vertex, i0, i1, i2)
+        sr, sg, sb = interpolate(w, lit.vertex, i0, i1, i2, 3)
     else:
-        interpolate(w, verts, i0, i1, i2, p)
+        p = interpolate(w, geo.verts_view, i0, i1, i2)
         if path == PIXEL_FACE_NORMAL:
-            for c in range(3):
-                n[c] = geo.face_normals[s, c]
-            if (n[2] < 0.0) if geo.parallel else (n[0] * p[0] + n[1] * p[1] + n[2] * p[2] > 0.0):
-                for c in range(3):
-                    n[c] = -n[c]
+            nx, ny, nz = geo.face_normals[s, 0], geo.face_normals[s, 1], geo.face_normals[s, 2]
+            if (nz < 0.0) if geo.parallel else (nx * p[0] + ny * p[1] + nz * p[2] > 0.0):
+                nx, ny, nz = -nx, -ny, -nz
         else:
-            interpolate(w, geo.normals_view, i0, i1, i2, n)
-            normalise(n)
+            nx, ny, nz = interpolate(w, geo.normals_view, i0, i1, i2)
+            nx, ny, nz = normalise(nx, ny, nz)
             if path == PIXEL_TWO_SIDED and not frags.front[k]:
-                for c in range(3):
-                    n[c] = -n[c]
-        reflect(n, p, o, materials, lights, out, spec)
+                nx, ny, nz = -nx, -ny, -nz
+        r, g, b, sr, sg, sb = reflect((nx, ny, nz), p, o, materials, lights)
     if textures.textured[o]:  # the texture multiplies the lit colour (VTK, GL_MODULATE) ...
         ts = w[0] * geo.tcoords[i0, 0] + w[1] * geo.tcoords[i1, 0] + w[2] * geo.tcoords[i2, 0]
         tt = w[0] * geo.tcoords[i0, 1] + w[1] * geo.tcoords[i1, 1] + w[2] * geo.tcoords[i2, 1]
-        sample_texture(textures, o, ts, tt, tex)
-        for c in range(3):
-            out[c] *= tex[c]
-    for c in range(3):  # ... and the separate specular colour (zero unless asked for) comes after it
-        out[c] += spec[c]
+        tr, tg, tb = sample_texture(textures, o, ts, tt)
+        r, g, b = r * tr, g * tg, b * tb
+    return r + sr, g + sg, b + sb  # ... and the separate specular colour (zero unless asked for) comes after it
 
 
 @njit(cache=True, parallel=True)
@@ -213,7 +197,6 @@ def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands
     """
     height, width = frags.tri_index.shape
     for band in prange(n_bands):
-        scratch = new_scratch()
         for row in range(band, height, n_bands):
             for col in range(width):
                 k = frags.tri_index[row, col]
@@ -221,10 +204,11 @@ def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands
                     for c in range(3):
                         rgb[row, col, c] = background[c]
                     continue
-                fragment_colour(k, frags.bary[row, col, 0], frags.bary[row, col, 1], frags, geo, materials, textures,
-                                lights, lit, scratch)
-                for c in range(3):
-                    rgb[row, col, c] = unorm8(scratch[COLOUR, c])
+                r, g, b = fragment_colour(k, frags.bary[row, col, 0], frags.bary[row, col, 1], frags, geo, materials,
+                                          textures, lights, lit)
+                rgb[row, col, 0] = unorm8(r)
+                rgb[row, col, 1] = unorm8(g)
+                rgb[row, col, 2] = unorm8(b)
 
 
 def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, rgb: np.ndarray,

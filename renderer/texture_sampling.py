@@ -88,14 +88,13 @@ def texel(texels, offset, width, i, j, c):
 
 
 @njit(cache=True)
-def sample(texels, offset, width, height, filter_mode, wrap, s, t, out):
-    """The filtered texture colour at (s, t) into ``out`` (3,)."""
+def sample(texels, offset, width, height, filter_mode, wrap, s, t):
+    """The filtered texture colour at (s, t): ``(r, g, b)``, each value/255."""
     if filter_mode == NEAREST:
         i = wrap_index(int(math.floor(s * width)), width, wrap)
         j = wrap_index(int(math.floor(t * height)), height, wrap)
-        for c in range(3):
-            out[c] = texel(texels, offset, width, i, j, c) / 255.0
-        return
+        return (texel(texels, offset, width, i, j, 0) / 255.0, texel(texels, offset, width, i, j, 1) / 255.0,
+                texel(texels, offset, width, i, j, 2) / 255.0)
     u = s * width - 0.5
     v = t * height - 0.5
     i0f = math.floor(u)
@@ -106,18 +105,26 @@ def sample(texels, offset, width, height, filter_mode, wrap, s, t, out):
     i1 = wrap_index(int(i0f) + 1, width, wrap)
     j0 = wrap_index(int(j0f), height, wrap)
     j1 = wrap_index(int(j0f) + 1, height, wrap)
-    for c in range(3):
-        t00 = np.int64(texel(texels, offset, width, i0, j0, c))
-        t10 = np.int64(texel(texels, offset, width, i1, j0, c))
-        t01 = np.int64(texel(texels, offset, width, i0, j1, c))
-        t11 = np.int64(texel(texels, offset, width, i1, j1, c))
-        h0 = t00 + (((t10 - t00) * wa + 128) >> 8)
-        h1 = t01 + (((t11 - t01) * wa + 128) >> 8)
-        out[c] = (h0 + (((h1 - h0) * wb + 128) >> 8)) / 255.0
+    return (bilinear(texels, offset, width, i0, i1, j0, j1, wa, wb, 0) / 255.0,
+            bilinear(texels, offset, width, i0, i1, j0, j1, wa, wb, 1) / 255.0,
+            bilinear(texels, offset, width, i0, i1, j0, j1, wa, wb, 2) / 255.0)
 
 
 @njit(cache=True, inline="always")
-def sample_texture(textures, o, s, t, out):
-    """Object ``o``'s texture at (s, t) into ``out`` (3,): :func:`sample` on its part of ``textures``."""
-    sample(textures.texels, textures.offset[o], textures.width[o], textures.height[o], textures.filter[o],
-           textures.wrap[o], s, t, out)
+def bilinear(texels, offset, width, i0, i1, j0, j1, wa, wb, c):
+    """Channel ``c`` of the four texels (i0, j0) … (i1, j1) blended with 8-bit weights ``wa``
+    (horizontal) and ``wb`` (vertical), as llvmpipe does: 0..255 integers."""
+    t00 = np.int64(texel(texels, offset, width, i0, j0, c))
+    t10 = np.int64(texel(texels, offset, width, i1, j0, c))
+    t01 = np.int64(texel(texels, offset, width, i0, j1, c))
+    t11 = np.int64(texel(texels, offset, width, i1, j1, c))
+    h0 = t00 + (((t10 - t00) * wa + 128) >> 8)
+    h1 = t01 + (((t11 - t01) * wa + 128) >> 8)
+    return h0 + (((h1 - h0) * wb + 128) >> 8)
+
+
+@njit(cache=True, inline="always")
+def sample_texture(textures, o, s, t):
+    """Object ``o``'s texture at (s, t): :func:`sample` on its part of ``textures``."""
+    return sample(textures.texels, textures.offset[o], textures.width[o], textures.height[o], textures.filter[o],
+                  textures.wrap[o], s, t)

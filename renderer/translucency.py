@@ -39,7 +39,7 @@ from renderer.jit import njit, prange
 
 from renderer.bands import first_row_of_band, raster_bands, shading_bands
 from renderer.raster import FILL_RULES, pixel_fragment, row_span, set_up
-from renderer.shading import COLOUR, Fragments, ShadingInputs, fragment_colour, new_scratch, unorm8
+from renderer.shading import Fragments, ShadingInputs, fragment_colour, unorm8
 from renderer.workspace import empty
 
 OIT, DEPTH_PEELING, SORTED = 0, 1, 2
@@ -269,7 +269,6 @@ def shade_translucent(frags, lists, mode, geo, materials, textures, lights, lit,
     """
     height, width = lists.count.shape
     for band in prange(n_bands):
-        scratch = new_scratch()
         fragments = np.empty((lists.longest, 5))
         behind = np.empty(3, np.int64)
         out = np.empty(3, np.int64)
@@ -284,10 +283,9 @@ def shade_translucent(frags, lists, mode, geo, materials, textures, lights, lit,
                 for j in range(m):
                     i = lists.start[row, col] + j
                     k = lists.tri[i]
-                    fragment_colour(k, lists.bary[i, 0], lists.bary[i, 1], frags, geo, materials, textures, lights,
-                                    lit, scratch)
-                    for c in range(3):
-                        fragments[j, c] = scratch[COLOUR, c]
+                    r, g, b = fragment_colour(k, lists.bary[i, 0], lists.bary[i, 1], frags, geo, materials, textures,
+                                              lights, lit)
+                    fragments[j, RED], fragments[j, GREEN], fragments[j, BLUE] = r, g, b
                     fragments[j, ALPHA] = materials.opacity[geo.tri_object[frags.clip_source[k]]]
                     fragments[j, DEPTH] = lists.z[i]
                 for c in range(3):

@@ -31,16 +31,14 @@ def material_row(material) -> MaterialRow:
 
 
 @njit(cache=True, inline="always")
-def classic_lighting(n, p, o, materials, lights, out, spec):
+def classic_lighting(n, p, o, materials, lights):
     """The course's ``Ka·O·A + Σ (Kd·O·I·(L·N) + Ks·I·(R·V)^n)`` for object ``o`` at one point
-    (the scalar kernel), clamped to 0..1, in ``out`` (``spec`` is zeroed: the course has one
-    colour)."""
+    (the scalar kernel), clamped to 0..1: ``(r, g, b, 0, 0, 0)`` (the course has one colour)."""
     amb, dif, spe, power = materials.ambient[o], materials.diffuse[o], materials.specular[o], materials.power[o]
+    a, li = lights.ambient_light, lights.intensity_rgb
     plen = math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
     vx, vy, vz = -p[0] / plen, -p[1] / plen, -p[2] / plen
-    for c in range(3):
-        out[c] = amb[c] * lights.ambient_light[c]
-        spec[c] = 0.0
+    r, g, b = amb[0] * a[0], amb[1] * a[1], amb[2] * a[2]
     for i in range(lights.direction.shape[0]):
         lx, ly, lz, att = light_at(lights, i, p)
         ndl = n[0] * lx + n[1] * ly + n[2] * lz
@@ -48,10 +46,10 @@ def classic_lighting(n, p, o, materials, lights, out, spec):
             continue
         rx, ry, rz = 2.0 * ndl * n[0] - lx, 2.0 * ndl * n[1] - ly, 2.0 * ndl * n[2] - lz
         sf = max(rx * vx + ry * vy + rz * vz, 0.0) ** power
-        for c in range(3):
-            out[c] += att * lights.intensity_rgb[i, c] * (dif[c] * ndl + spe[c] * sf)
-    for c in range(3):
-        out[c] = min(max(out[c], 0.0), 1.0)
+        r += att * li[i, 0] * (dif[0] * ndl + spe[0] * sf)
+        g += att * li[i, 1] * (dif[1] * ndl + spe[1] * sf)
+        b += att * li[i, 2] * (dif[2] * ndl + spe[2] * sf)
+    return min(max(r, 0.0), 1.0), min(max(g, 0.0), 1.0), min(max(b, 0.0), 1.0), 0.0, 0.0, 0.0
 
 
 MODEL = ReflectionModel(name="classic", material_row=material_row, shading_path=textbook_path,

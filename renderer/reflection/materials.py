@@ -77,9 +77,10 @@ class ReflectionModel(NamedTuple):
     name : the scene file's ``model`` value.
     material_row : :class:`lab.scene.Material` → :class:`MaterialRow`.
     shading_path : :class:`lab.scene.SceneObject` → its shading path.
-    lighting : the scalar kernel ``lighting(n, p, o, materials, lights, out, spec)``: the
-        lit colour of object ``o`` at view-space point ``p`` with unit normal ``n`` into
-        ``out`` (3,), and the secondary (separately added specular) colour into ``spec``.
+    lighting : the scalar kernel ``lighting(n, p, o, materials, lights)``: the lit colour
+        of object ``o`` at view-space point ``p`` with unit normal ``n`` (3-tuples or arrays),
+        ``(r, g, b, sr, sg, sb)``: the primary colour and the secondary (separately added
+        specular) colour, linear RGB.
     """
 
     name: str

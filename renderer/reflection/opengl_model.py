@@ -31,19 +31,25 @@ def material_row(material) -> MaterialRow:
 
 
 @njit(cache=True, inline="always")
-def opengl_lighting(n, p, o, materials, lights, out, spec):
+def clamp01(x):
+    return min(max(x, 0.0), 1.0)
+
+
+@njit(cache=True, inline="always")
+def opengl_lighting(n, p, o, materials, lights):
     """Fixed-function OpenGL's lit colour of object ``o`` at one point (the scalar kernel),
-    clamped to 0..1: all of it in ``out`` (GL_SINGLE_COLOR), or the specular part in ``spec``
-    with separate specular (else ``spec`` is zero)."""
+    clamped to 0..1: ``(r, g, b, sr, sg, sb)``, all of it in the primary colour
+    (GL_SINGLE_COLOR) with a zero secondary, or the specular part in the secondary colour
+    with separate specular."""
     amb, dif, spe, shininess = materials.ambient[o], materials.diffuse[o], materials.specular[o], materials.power[o]
+    ga, la, ld, ls = lights.global_ambient, lights.gl_ambient, lights.gl_diffuse, lights.gl_specular
     if lights.local_viewer:
         plen = math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
         vx, vy, vz = -p[0] / plen, -p[1] / plen, -p[2] / plen
     else:
         vx, vy, vz = 0.0, 0.0, 1.0
-    for c in range(3):
-        out[c] = lights.global_ambient[c] * amb[c]
-        spec[c] = 0.0
+    r, g, b = ga[0] * amb[0], ga[1] * amb[1], ga[2] * amb[2]
+    sr = sg = sb = 0.0
     for i in range(lights.direction.shape[0]):
         lx, ly, lz, att = light_at(lights, i, p)
         if att == 0.0:
@@ -56,15 +62,18 @@ def opengl_lighting(n, p, o, materials, lights, out, spec):
             ndh = (n[0] * hx + n[1] * hy + n[2] * hz) / hl if hl > 0.0 else 0.0
             sf = max(ndh, 0.0) ** shininess
         df = max(ndl, 0.0)
-        for c in range(3):
-            out[c] += att * (lights.gl_ambient[i, c] * amb[c] + df * lights.gl_diffuse[i, c] * dif[c])
-            if lights.separate_specular:
-                spec[c] += att * sf * lights.gl_specular[i, c] * spe[c]
-            else:
-                out[c] += att * sf * lights.gl_specular[i, c] * spe[c]
-    for c in range(3):
-        out[c] = min(max(out[c], 0.0), 1.0)
-        spec[c] = min(max(spec[c], 0.0), 1.0)
+        r += att * (la[i, 0] * amb[0] + df * ld[i, 0] * dif[0])
+        g += att * (la[i, 1] * amb[1] + df * ld[i, 1] * dif[1])
+        b += att * (la[i, 2] * amb[2] + df * ld[i, 2] * dif[2])
+        if lights.separate_specular:
+            sr += att * sf * ls[i, 0] * spe[0]
+            sg += att * sf * ls[i, 1] * spe[1]
+            sb += att * sf * ls[i, 2] * spe[2]
+        else:
+            r += att * sf * ls[i, 0] * spe[0]
+            g += att * sf * ls[i, 1] * spe[1]
+            b += att * sf * ls[i, 2] * spe[2]
+    return clamp01(r), clamp01(g), clamp01(b), clamp01(sr), clamp01(sg), clamp01(sb)
 
 
 MODEL = ReflectionModel(name="opengl", material_row=material_row, shading_path=textbook_path,

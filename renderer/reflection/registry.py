@@ -34,16 +34,15 @@ VTK, OPENGL, CLASSIC = CODES["vtk"], CODES["opengl"], CODES["classic"]
 
 
 @njit(cache=True, inline="always")
-def reflect(n, p, o, materials, lights, out, spec):
+def reflect(n, p, o, materials, lights):
     """The lit colour of object ``o`` at view-space point ``p`` with unit normal ``n``, by its
-    model: primary RGB into ``out``, secondary (separate specular) RGB into ``spec``."""
+    model: ``(r, g, b, sr, sg, sb)``, the primary and the secondary (separate specular) RGB."""
     model = materials.model[o]
     if model == VTK:
-        vtk_lighting(n, p, o, materials, lights, out, spec)
-    elif model == OPENGL:
-        opengl_lighting(n, p, o, materials, lights, out, spec)
-    else:
-        classic_lighting(n, p, o, materials, lights, out, spec)
+        return vtk_lighting(n, p, o, materials, lights)
+    if model == OPENGL:
+        return opengl_lighting(n, p, o, materials, lights)
+    return classic_lighting(n, p, o, materials, lights)
 
 
 def material_table(scene) -> Materials:

@@ -58,9 +58,9 @@ def reflect_dot(lx, ly, lz, n, vx, vy, vz):
 
 
 @njit(cache=True, inline="always")
-def vtk_lighting(n, p, o, materials, lights, out, spec):
-    """VTK's colour of object ``o`` at one fragment (the scalar kernel): linear RGB into ``out``;
-    ``spec`` is zeroed (VTK has one colour).
+def vtk_lighting(n, p, o, materials, lights):
+    """VTK's colour of object ``o`` at one fragment (the scalar kernel): linear
+    ``(r, g, b, 0, 0, 0)`` (VTK has one colour, so the secondary colour is zero).
 
     n : unit normal on the viewer's side (view space). p : fragment position (view
     space). materials : :class:`~renderer.reflection.materials.Materials` (row ``o``:
@@ -72,19 +72,15 @@ def vtk_lighting(n, p, o, materials, lights, out, spec):
     amb, dif, spe, power = materials.ambient[o], materials.diffuse[o], materials.specular[o], materials.power[o]
     l_col = lights.intensity_rgb
     complexity = lights.complexity if materials.lit[o] else UNLIT
-    for c in range(3):
-        spec[c] = 0.0
     if complexity == UNLIT:
-        for c in range(3):
-            out[c] = amb[c] + dif[c]
-        return
+        return amb[0] + dif[0], amb[1] + dif[1], amb[2] + dif[2], 0.0, 0.0, 0.0
     shiny = spe[0] != 0.0 or spe[1] != 0.0 or spe[2] != 0.0  # else Ks·Cs·sf is 0 whatever sf: skip the power
     if complexity == HEADLIGHT_ONLY:
         df = max(1e-6, n[2])
         sf = df ** power if shiny else 0.0
-        for c in range(3):
-            out[c] = amb[c] + df * dif[c] * l_col[0, c] + sf * spe[c] * l_col[0, c]
-        return
+        return (amb[0] + df * dif[0] * l_col[0, 0] + sf * spe[0] * l_col[0, 0],
+                amb[1] + df * dif[1] * l_col[0, 1] + sf * spe[1] * l_col[0, 1],
+                amb[2] + df * dif[2] * l_col[0, 2] + sf * spe[2] * l_col[0, 2], 0.0, 0.0, 0.0)
     plen = math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
     vx, vy, vz = (-p[0] / plen, -p[1] / plen, -p[2] / plen) if plen > 0.0 else (0.0, 0.0, 1.0)
     d0 = d1 = d2 = 0.0  # Σ df·Lc
@@ -101,9 +97,8 @@ def vtk_lighting(n, p, o, materials, lights, out, spec):
             s0 += sf * l_col[i, 0]
             s1 += sf * l_col[i, 1]
             s2 += sf * l_col[i, 2]
-    out[0] = amb[0] + dif[0] * d0 + spe[0] * s0
-    out[1] = amb[1] + dif[1] * d1 + spe[1] * s1
-    out[2] = amb[2] + dif[2] * d2 + spe[2] * s2
+    return (amb[0] + dif[0] * d0 + spe[0] * s0, amb[1] + dif[1] * d1 + spe[1] * s1, amb[2] + dif[2] * d2 + spe[2] * s2,
+            0.0, 0.0, 0.0)
 
 
 MODEL = ReflectionModel(name="vtk", material_row=material_row, shading_path=shading_path, lighting=vtk_lighting)

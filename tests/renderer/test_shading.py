@@ -54,26 +54,20 @@ def shade_all(frags, geo, mats, lit=None, textures=UNTEXTURED, lights=None, n_ba
 def test_screen_linear_weights_are_the_rasteriser_weights():
     """l1 = l2 = 1/3 with clip w (1, 2, 4), screen-linear: (1/3, 1/3, 1/3) whatever w."""
     frags = fragments(triangle(np.eye(3), w=(1, 2, 4)), [[[1 / 3, 1 / 3]]])
-    out = np.empty(3)
-    fragment_weights(frags, 0, 1 / 3, 1 / 3, out)
-    np.testing.assert_allclose(out, [1 / 3, 1 / 3, 1 / 3])
+    np.testing.assert_allclose(fragment_weights(frags, 0, 1 / 3, 1 / 3), [1 / 3, 1 / 3, 1 / 3])
 
 
 def test_perspective_weights_divide_by_clip_w_and_renormalise():
     """l = (1/3, 1/3, 1/3), w = (1, 2, 4): (1/3, 1/6, 1/12) / (7/12) = (4/7, 2/7, 1/7)."""
     frags = fragments(triangle(np.eye(3), w=(1, 2, 4)), [[[1 / 3, 1 / 3]]], perspective=True)
-    out = np.empty(3)
-    fragment_weights(frags, 0, 1 / 3, 1 / 3, out)
-    np.testing.assert_allclose(out, [4 / 7, 2 / 7, 1 / 7])
+    np.testing.assert_allclose(fragment_weights(frags, 0, 1 / 3, 1 / 3), [4 / 7, 2 / 7, 1 / 7])
 
 
 def test_weights_are_carried_back_through_clipping():
     """Clipped vertex 1 is the midpoint of source vertices 0 and 1; (l0, l1, l2) = (.5, .25, .25) →
     .5·(1, 0, 0) + .25·(.5, .5, 0) + .25·(0, 0, 1) = (.625, .125, .25)."""
     frags = fragments(triangle(np.eye(3)), [[[0.25, 0.25]]], clip_bary=[[1, 0, 0], [0.5, 0.5, 0], [0, 0, 1]])
-    out = np.empty(3)
-    fragment_weights(frags, 0, 0.25, 0.25, out)
-    np.testing.assert_allclose(out, [0.625, 0.125, 0.25])
+    np.testing.assert_allclose(fragment_weights(frags, 0, 0.25, 0.25), [0.625, 0.125, 0.25])
 
 
 def test_plane_normal_is_the_unit_cross_product_and_zero_when_degenerate():

@@ -19,18 +19,17 @@ MA, MD, MS = (0.1, 0.1, 0.1), (0.6, 0.4, 0.2), (0.4, 0.4, 0.4)
 def light(n, p, to_light, shininess=2.0, **model):
     """opengl_lighting of one object (MA, MD, MS, ``shininess``) under one white directional light whose
     L (toward the light) is ``to_light``; returns (primary, secondary)."""
-    out, spec = np.empty(3), np.empty(3)
     lights = view_lights([{"direction": -np.asarray(to_light, float), **model.pop("light", {})}], **model)
-    opengl_lighting(np.asarray(n, float), np.asarray(p, float), 0, materials(MA, MD, MS, shininess, model="opengl"),
-                    lights, out, spec)
-    return out, spec
+    colour = opengl_lighting(np.asarray(n, float), np.asarray(p, float), 0,
+                             materials(MA, MD, MS, shininess, model="opengl"), lights)
+    return np.array(colour[:3]), np.array(colour[3:])
 
 
 def test_a_light_at_60_degrees_for_the_infinite_viewer():
     """n·L = ½; H = normalize(L + (0,0,1)) = (½, 0, √3/2), (n·H)² = ¾: 0.2·0.1 + ½·Md + ¾·0.4 = (.62, .52, .42)."""
     out, spec = light(UP, (3, 1, -5), (S3 / 2, 0, 0.5))
     np.testing.assert_allclose(out, [0.62, 0.52, 0.42])
-    assert spec.tolist() == [0, 0, 0]
+    assert spec.tolist() == [0.0, 0.0, 0.0]
 
 
 def test_separate_specular_keeps_the_highlight_apart():

@@ -25,11 +25,10 @@ SPE = np.array([0.2, 0.25, 0.3])
 def shade(n, p, complexity, lights, power=1.0, lit=True):
     """vtk_lighting of a one-object table (AMB, DIF, SPE, ``power``) at one fragment; ``lights``
     is a list of dicts (see ``kernel_inputs.view_lights``)."""
-    out, spec = np.full(3, np.nan), np.full(3, np.nan)
-    vtk_lighting(np.asarray(n, np.float64), np.asarray(p, np.float64), 0, materials(AMB, DIF, SPE, power, lit=lit),
-                 view_lights(lights, complexity), out, spec)
-    assert spec.tolist() == [0.0, 0.0, 0.0]  # VTK has one colour
-    return out
+    colour = vtk_lighting(np.asarray(n, np.float64), np.asarray(p, np.float64), 0,
+                          materials(AMB, DIF, SPE, power, lit=lit), view_lights(lights, complexity))
+    assert colour[3:] == (0.0, 0.0, 0.0)  # VTK has one colour
+    return np.array(colour[:3])
 
 
 # --------------------------------------------------------------------------- the formulas
