@@ -55,7 +55,7 @@ def depth_grey(depth: np.ndarray, coverage: np.ndarray, lo: float, hi: float) ->
 
 
 def write_figure_images(m, folder: Path, depth: bool = False) -> list[str]:
-    """Write a :class:`lessons.site.measure.Measurement` as PNGs into ``folder``; return their names.
+    """Write a :class:`lessons.site.measurement.Measurement` as PNGs into ``folder``; return their names.
 
     ``ours.png`` and ``vtk.png`` (the two frames), ``delta_e.png`` (ΔE2000 heat map on
     0..``VMAX``); with ``depth``, also ``depth-ours.png``, ``depth-vtk.png`` (both on one

@@ -1,25 +1,17 @@
-"""Tests for compare/textbook_lighting.py: OpenGL 1.x and classic Phong lighting in numpy.
+"""The opengl model's lit reference (compare/lit_reference/opengl_lit.py): OpenGL 1.x lighting in numpy.
 
-Expected values are worked by hand from the formulas (OpenGL 1.x specification §2.14.1;
-the course slides' classic model), not taken from the code under test or from renderer/.
+Expected values are worked by hand from the OpenGL 1.x specification §2.14.1, not taken
+from the code under test or from renderer/.
 """
 import math
 
 import numpy as np
 import pytest
 
-from compare.textbook_lighting import EyeLight, classic_colours, face_points_and_normals, opengl_colours, unit
+from compare.lit_reference.eye_space import EyeLight, unit
+from compare.lit_reference.opengl_lit import opengl_colours
 
-S3 = math.sqrt(3.0)
-UP = np.array([[0.0, 0.0, 1.0]])          # a normal facing the eye
-ON_AXIS = np.array([[0.0, 0.0, -3.0]])    # a point straight ahead of the eye
-WHITE = np.ones(3)
-ZERO = np.zeros(3)
-
-
-def directional(to_light, **colours) -> EyeLight:
-    """A directional light whose L (toward the light) is ``to_light``."""
-    return EyeLight(direction=-unit(np.asarray(to_light, dtype=float)), positional=False, **colours)
+from .eye_cases import ON_AXIS, S3, UP, WHITE, ZERO, directional, dot, norm, random_scene, slow_L_att  # noqa: F401
 
 
 # ---------------------------------------------------------------- OpenGL 1.x ----
@@ -119,117 +111,18 @@ def test_opengl_shininess_zero_gives_full_specular_when_lit():
 
 # ---------------------------------------------------------------- classic -------
 
-CLASSIC = dict(colour=np.array([0.6, 0.4, 0.2]), ka=0.5, kd=0.5, ks=0.8, n=4)
-
-
-def test_classic_straight_on_light_and_viewer():
-    """I = 0.5·O·A + 0.5·O·I + 0.8·I = (1.16, 1.04, 0.92) for O = (0.6,0.4,0.2), A = 0.2, I = 1; clamped."""
-    light = directional([0, 0, 1], colour=WHITE)
-    c = classic_colours(ON_AXIS, UP, lights=[light], ambient_light=0.2 * WHITE, **CLASSIC)
-    np.testing.assert_allclose(c, [[1.0, 1.0, 0.92]], rtol=0, atol=1e-12)
-
-
-def test_classic_light_at_30_degrees():
-    """L = (1/2, 0, √3/2) → R = (−1/2, 0, √3/2): R·V = √3/2 on the axis, cos 15° from P = (1,0,−1)."""
-    light = directional([0.5, 0, S3 / 2], colour=0.5 * WHITE)
-    P = np.array([[0.0, 0.0, -3.0], [1.0, 0.0, -1.0]])   # V = (0,0,1); V = (−1,0,1)/√2 (45°)
-    c = classic_colours(P, UP, lights=[light], ambient_light=0.2 * WHITE, **CLASSIC)
-    O = CLASSIC["colour"]
-    diffuse_and_ambient = 0.5 * O * 0.2 + 0.5 * O * 0.5 * (S3 / 2)
-    cos15 = math.cos(math.radians(15))
-    expected = [diffuse_and_ambient + 0.8 * 0.5 * (S3 / 2) ** 4,      # (√3/2)⁴ = 9/16
-                diffuse_and_ambient + 0.8 * 0.5 * cos15 ** 4]
-    np.testing.assert_allclose(c, expected, rtol=0, atol=1e-12)
-    np.testing.assert_allclose(c[0], [0.414904, 0.351603, 0.288301], atol=1e-6)   # by hand
-
-
-def test_classic_face_turned_away_gets_ambient_only():
-    """N·L = −0.8 < 0: no (negative) diffuse and no specular, though R·V ≈ 0.46 > 0 here."""
-    light = directional([0, 0.6, -0.8], colour=WHITE)
-    P = np.array([[0.0, 6.0, -1.0]])      # V = (0, −6, 1)/√37: R·V = −1.6/√37 + 4.4/√37 > 0
-    c = classic_colours(P, UP, **dict(CLASSIC, n=1), lights=[light], ambient_light=0.2 * WHITE)
-    np.testing.assert_allclose(c, [0.5 * CLASSIC["colour"] * 0.2], rtol=0, atol=1e-12)
-
-
-def test_classic_point_light_attenuation():
-    """The classic model attenuates the same way: att = 1/(1 + 0.5·2 + 0.25·4) = 1/3."""
-    light = EyeLight(position=np.zeros(3), positional=True, attenuation=np.array([1.0, 0.5, 0.25]), colour=WHITE)
-    c = classic_colours([[0.0, 0.0, -2.0]], UP, lights=[light], ambient_light=ZERO, **CLASSIC)
-    np.testing.assert_allclose(c, [(0.5 * CLASSIC["colour"] + 0.8) / 3], rtol=0, atol=1e-12)
-
-
-# ---------------------------------------------------------------- shapes --------
-
-def _dot(a, b):
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-
-
-def _norm(a):
-    length = math.sqrt(_dot(a, a))
-    return [x / length for x in a]
-
-
-def _slow_L_att(light, p):
-    """Plain per-point L and attenuation (with spot), straight from the formulas."""
-    if not light.positional:
-        return [-x for x in light.direction], 1.0
-    to = [light.position[k] - p[k] for k in range(3)]
-    d = math.sqrt(_dot(to, to))
-    L = [x / d for x in to]
-    a0, a1, a2 = light.attenuation
-    att = 1.0 / (a0 + a1 * d + a2 * d * d)
-    if light.cos_cone is not None:
-        c = -_dot(L, light.direction)
-        att *= c ** light.exponent if c >= light.cos_cone else 0.0
-    return L, att
-
-
 def slow_opengl(p, n, Ma, Md, Ms, shininess, lights, ga, local_viewer):
-    V = _norm([-x for x in p]) if local_viewer else [0.0, 0.0, 1.0]
+    V = norm([-x for x in p]) if local_viewer else [0.0, 0.0, 1.0]
     c = [ga[k] * Ma[k] for k in range(3)]
     for light in lights:
-        L, att = _slow_L_att(light, p)
-        nl = _dot(n, L)
-        H = _norm([L[k] + V[k] for k in range(3)])
-        s = max(_dot(n, H), 0.0) ** shininess if nl > 0 else 0.0
+        L, att = slow_L_att(light, p)
+        nl = dot(n, L)
+        H = norm([L[k] + V[k] for k in range(3)])
+        s = max(dot(n, H), 0.0) ** shininess if nl > 0 else 0.0
         for k in range(3):
             c[k] += att * (light.ambient[k] * Ma[k] + max(nl, 0.0) * light.diffuse[k] * Md[k]
                            + s * light.specular[k] * Ms[k])
     return [min(max(x, 0.0), 1.0) for x in c]
-
-
-def slow_classic(p, n, O, ka, kd, ks, m, lights, A):
-    V = _norm([-x for x in p])
-    c = [ka * O[k] * A[k] for k in range(3)]
-    for light in lights:
-        L, att = _slow_L_att(light, p)
-        nl = _dot(n, L)
-        if nl <= 0:
-            continue
-        R = [2 * nl * n[k] - L[k] for k in range(3)]
-        rv = max(_dot(R, V), 0.0)
-        for k in range(3):
-            c[k] += att * (kd * O[k] * light.colour[k] * nl + ks * light.colour[k] * rv ** m)
-    return [min(max(x, 0.0), 1.0) for x in c]
-
-
-@pytest.fixture
-def random_scene():
-    rng = np.random.default_rng(20240611)
-    P = rng.uniform([-3, -3, -8], [3, 3, -1], size=(1000, 3))
-    N = unit(rng.normal(size=(1000, 3)))
-    lights = [
-        directional(rng.normal(size=3), colour=rng.uniform(0, 2, 3), ambient=rng.uniform(0, 0.3, 3),
-                    diffuse=rng.uniform(0, 2, 3), specular=rng.uniform(0, 2, 3)),
-        EyeLight(position=rng.uniform(-2, 2, 3), positional=True, attenuation=np.array([1.0, 0.1, 0.02]),
-                 colour=rng.uniform(0, 2, 3), ambient=rng.uniform(0, 0.3, 3), diffuse=rng.uniform(0, 2, 3),
-                 specular=rng.uniform(0, 2, 3)),
-        EyeLight(position=np.array([0.5, 1.0, 1.0]), direction=unit(np.array([0.0, -0.2, -1.0])), positional=True,
-                 cos_cone=math.cos(math.radians(25)), exponent=3.5, attenuation=np.array([0.5, 0.2, 0.0]),
-                 colour=rng.uniform(0, 2, 3), ambient=rng.uniform(0, 0.3, 3), diffuse=rng.uniform(0, 2, 3),
-                 specular=rng.uniform(0, 2, 3)),
-    ]
-    return P, N, lights
 
 
 @pytest.mark.parametrize("local_viewer", [False, True])
@@ -244,27 +137,50 @@ def test_opengl_vectorised_equals_per_point_loop(random_scene, local_viewer):
     assert (fast == 1).any() and (fast < 1).all(axis=1).any()   # some channels clamp, some points don't
 
 
-def test_classic_vectorised_equals_per_point_loop(random_scene):
-    """1000 random points, three kinds of light: the vectorised classic colours equal a plain loop."""
-    P, N, lights = random_scene
-    O, A = (0.9, 0.5, 0.2), (0.3, 0.3, 0.4)
-    fast = classic_colours(P, N, O, 0.3, 0.6, 0.7, 7.0, lights, ambient_light=A)
-    slow = [slow_classic(list(p), list(n), O, 0.3, 0.6, 0.7, 7.0, lights, A) for p, n in zip(P, N)]
-    assert fast.shape == (1000, 3)
-    np.testing.assert_allclose(fast, slow, rtol=0, atol=1e-12)
-    assert (fast == 1).any() and (fast < 1).all(axis=1).any()
+# ---------------------------------------------------------------- the model's room --
+
+def scene_with(**render):
+    from lab.scene import Camera, Image, Light, RenderSettings, Scene
+
+    return Scene(image=Image(), camera=Camera(), objects=(), render=RenderSettings(**render),
+                 lights=(Light(ambient_color=(0.1, 0.1, 0.1)), Light(ambient_color=(0.5, 0.5, 0.5), on=False)))
 
 
-# ---------------------------------------------------------------- helpers -------
+def gl_object(**material):
+    from lab.scene import Material, SceneObject
+    from lab.shapes import quad
 
-def test_face_points_and_normals_on_hand_triangles():
-    """Centroids and unit (v1−v0)×(v2−v0): (0,0,4) → +z and (0,6,0) → +y."""
-    points = np.array([[0, 0, 0], [2, 0, 0], [0, 2, 0], [0, 0, 3]], dtype=float)
-    centroids, normals = face_points_and_normals(points, np.array([[0, 1, 2], [0, 3, 1]]))
-    np.testing.assert_allclose(centroids, [[2 / 3, 2 / 3, 0], [2 / 3, 0, 1]], atol=1e-15)
-    np.testing.assert_allclose(normals, [[0, 0, 1], [0, 1, 0]], atol=1e-15)
+    return SceneObject(mesh=quad(1.0), material=Material(model="opengl", **material))
 
 
-def test_unit_scales_rows_and_leaves_zero_alone():
-    """unit() divides each row by its length; a zero row stays zero (no NaN)."""
-    np.testing.assert_allclose(unit([[3.0, 0.0, 4.0], [0.0, 0.0, 0.0]]), [[0.6, 0.0, 0.8], [0.0, 0.0, 0.0]])
+def test_lit_keeps_the_specular_apart_only_when_the_scene_asks():
+    """Light straight on: primary .2·Ma + Md, secondary Ms (each clamped); single colour: the sum, clamped."""
+    from compare.lit_reference.opengl_lit import lit
+
+    obj = gl_object(color=(0.5, 0.25, 0.25), specular_color=(0.25, 0.25, 0.25), shininess=10.0)
+    light = directional([0, 0, 1], ambient=ZERO, diffuse=WHITE, specular=WHITE)
+    rgb, secondary = lit(ON_AXIS, UP, obj, scene_with(separate_specular=True), [light])
+    np.testing.assert_allclose(rgb, [[0.6, 0.3, 0.3]])
+    np.testing.assert_allclose(secondary, [[0.25, 0.25, 0.25]])
+    rgb, secondary = lit(ON_AXIS, UP, obj, scene_with(), [light])
+    np.testing.assert_allclose(rgb, [[0.85, 0.55, 0.55]])
+    assert secondary is None
+
+
+def test_the_nearest_vtk_property_folds_the_ambient_lights_into_the_ambient_colour():
+    """(Ga + ΣLa of the lights that are on)·Ma = (0.2 + 0.1)·Ma, coefficients 1, power shininess/4."""
+    from compare.lit_reference.opengl_lit import vtk_property
+
+    v = vtk_property(gl_object(color=(1.0, 0.5, 0.0), shininess=40.0), scene_with())
+    np.testing.assert_allclose(v["ambient_color"], [0.3, 0.15, 0.0])
+    assert (v["ambient"], v["diffuse"], v["specular"], v["power"]) == (1.0, 1.0, 1.0, 10.0)
+
+
+def test_the_glsl_adds_the_secondary_colour_unless_it_is_kept_apart():
+    from compare.lit_reference.opengl_lit import glsl
+
+    obj, light = gl_object(), directional([0, 0, 1])
+    single = glsl(obj, scene_with(), [light])
+    assert "vec3 V = vec3(0.0, 0.0, 1.0);" in single and single.endswith("  c += secondary;\n")
+    separate = glsl(obj, scene_with(separate_specular=True, local_viewer=True), [light])
+    assert "vec3 V = normalize(-P);" in separate and "c += secondary" not in separate

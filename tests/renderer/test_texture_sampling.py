@@ -1,16 +1,14 @@
 """Texture sampling: which texel nearest picks, how linear blends, how repeat and clamp wrap."""
 import numpy as np
 
-from renderer.texture import CLAMP, LINEAR, NEAREST, REPEAT, sample
+from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, sample
 
 # a 2×2 8-bit texture, rows from the bottom: texel (0,0) = [10, 20, 30], (1,0) = [110, 120, 130], …
 TEX = np.array([[10, 20, 30], [110, 120, 130], [210, 220, 230], [50, 60, 70]], dtype=np.uint8)
 
 
 def at(s, t, filt=NEAREST, wrap=REPEAT):
-    out = np.empty(3)
-    sample(TEX, 0, 2, 2, filt, wrap, s, t, out)
-    return np.rint(out * 255).astype(int).tolist()
+    return np.rint(np.array(sample(TEX, 0, 2, 2, filt, wrap, s, t)) * 255).astype(int).tolist()
 
 
 def test_nearest_picks_the_texel_containing_the_point():

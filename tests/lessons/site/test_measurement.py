@@ -1,9 +1,9 @@
-"""lessons/site/measure.py: one measurement per figure, VTK always intact, the verdict a lesson promises."""
+"""lessons/site/measurement.py: one measurement per figure, VTK always intact, the verdict a lesson promises."""
 from __future__ import annotations
 
 from pathlib import Path
 
-from lessons.site.measure import FigureSpec, as_expected, command, measure_figure, verdict
+from lessons.site.measurement import FigureSpec, as_expected, command, measure_figure, verdict
 
 ROOT = Path(__file__).resolve().parents[3]
 FILL_RULE = str(ROOT / "lessons" / "05-scanline" / "fill-rule.toml")
