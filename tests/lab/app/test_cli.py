@@ -38,7 +38,8 @@ def test_compare_writes_five_files_and_the_metrics(tmp_path, capsys):
 
 
 def test_fail_above_exits_1_only_when_p999_exceeds(tmp_path):
-    """--fail-above DE: exit 1 when the 99.9th percentile ΔE2000 is above DE, else 0."""
+    """--fail-above DE (a p999 bar beside the parity bars): exit 1 when the 99.9th percentile ΔE2000 is above
+    DE, else 0."""
     # headlight-icosphere has a few 1-LSB pixels: its p99.9 lies between 0 and 5
     assert main(["compare", "headlight-icosphere", "--out", str(tmp_path / "a"), "--fail-above", "5"]) == 0
     assert main(["compare", "headlight-icosphere", "--out", str(tmp_path / "b"), "--fail-above", "0"]) == 1
@@ -99,11 +100,12 @@ def test_scenes_lists_every_preset(capsys):
 
 @pytest.mark.parametrize("preset", sorted(p.stem for p in (REPO / "lab" / "scenes").glob("*.toml")))
 def test_every_preset_compares_from_the_command_line(preset, tmp_path, capsys):
-    """scanlab compare PRESET --fail-above 1: exit 0 (p99.9 ΔE2000 under one JND), or 1 for the presets
-    made to show a failure (the painter's algorithm)."""
-    from lab.app.demo import shows_a_failure
+    """scanlab compare PRESET --fail-above 1: exit 0 — a pass (the parity bars and p99.9 ΔE2000 under one
+    JND), or, for the presets made to show a failure (the painter's algorithm), a failure as meant."""
+    from compare.verdict import meant_to_fail
     from lab.loading import load_scene
 
-    expected = 1 if shows_a_failure(load_scene(preset)) else 0
-    assert main(["compare", preset, "--out", str(tmp_path), "--fail-above", "1.0"]) == expected
-    assert json.loads((tmp_path / "metrics.json").read_text())["scene"] == preset
+    expected = "fails as meant" if meant_to_fail(load_scene(preset)) else "pass"
+    assert main(["compare", preset, "--out", str(tmp_path), "--fail-above", "1.0"]) == 0
+    m = json.loads((tmp_path / "metrics.json").read_text())
+    assert m["scene"] == preset and m["verdict"]["status"] == expected
