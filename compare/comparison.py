@@ -28,26 +28,29 @@ from lab.atomic import atomic_file
 from lab.frame import Frame
 from lab.png import write_png
 
-def settings_line(scene, reference: str) -> str:
+def settings_line(scene, reference: str, **shown) -> str:
     """The settings that made a comparison's images, as one line for its panel.
 
     Model and shading ("mixed" when objects differ), interpolation, hidden-surface
     removal, back-face culling, transparency (when an object is translucent), separate
     specular (when it applies), the reference, the image size, lights and objects.
+    ``shown`` replaces a part's value (``interpolation="screen | perspective"`` for a
+    figure whose two images differ in it).
     """
     r = scene.render
-    parts = [f"model {model_label(scene)}", f"shading {shading_label(scene)}", f"interpolation {r.interpolation}",
-             f"hidden surfaces {r.hidden_surface}", "back faces culled" if r.cull_backfaces else "back faces drawn"]
-    if any(o.material.opacity < 1.0 for o in scene.objects):
-        parts.append(f"transparency {r.transparency}")
-    if r.separate_specular and any(o.material.reflection_model == "opengl" for o in scene.objects):
-        parts.append("separate specular colour")
-    w, h = scene.image.size
     lights = sum(1 for li in scene.lights if li.on)
-    parts += [f"reference {reference}", f"{w}×{h} px",
-              f"{len(scene.objects)} object{'s' * (len(scene.objects) != 1)}, "
-              f"{lights} light{'s' * (lights != 1)} on"]
-    return " · ".join(parts)
+    w, h = scene.image.size
+    parts = {"model": model_label(scene), "shading": shading_label(scene), "interpolation": r.interpolation,
+             "hidden surfaces": r.hidden_surface, "back faces": "culled" if r.cull_backfaces else "drawn"}
+    if any(o.material.opacity < 1.0 for o in scene.objects):
+        parts["transparency"] = r.transparency
+    if r.separate_specular and any(o.material.reflection_model == "opengl" for o in scene.objects):
+        parts["specular colour"] = "separate"
+    parts["reference"] = reference
+    parts.update({k.replace("_", " "): v for k, v in shown.items()})
+    n = len(scene.objects)
+    return " · ".join([f"{k} {v}" for k, v in parts.items()]
+                      + [f"{w}×{h} px", f"{n} object{'s' * (n != 1)}, {lights} light{'s' * (lights != 1)} on"])
 
 
 @dataclass(eq=False)

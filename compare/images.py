@@ -48,7 +48,7 @@ MARKS = 5
 """How many of the worst pixels are ringed on a panel."""
 MARK_COLOUR = (1.0, 0.1, 0.1)  # the rings: red with a white halo, visible on any colour
 INSET_ZOOM = 12  # PNG pixels per image pixel in the zoomed inset
-CHAR_PX = 6.3  # width of an average character at font size 10, for wrapping lines
+CHAR_PX = 7.2  # width of a wide-ish character at font size 10 (DejaVu Sans), for wrapping lines
 
 
 def save_figure(fig: Figure, path) -> None:
@@ -230,9 +230,11 @@ def _inset_row(canvas: PixelCanvas, left: float, top: float, ours_rgb, ref_rgb, 
         report = report._replace(coverage="differs")
     canvas.text(left, top, "worst pixel, ringed 1 (x = column, y = row from the top):", fontsize=10)
     canvas.text(left, top + 18, report.caption((labels[0], labels[1])), fontsize=10, family="monospace")
-    step, inset_top = INSET * INSET_ZOOM + 24, top + 40 + 22
+    step, inset_top = INSET * INSET_ZOOM + 36, top + 40 + 22
     for i, (rgb, title) in enumerate(((ours_rgb, labels[0]), (ref_rgb, labels[1]))):
-        _inset(canvas, left + i * step, inset_top, window(rgb, r, c, fill=128).astype(np.uint8), title)
+        short = title.split(" (")[0]  # "scanlab (ours)" → "scanlab": an inset is narrow
+        short = short if len(short) <= 17 else short[:16] + "…"
+        _inset(canvas, left + i * step, inset_top, window(rgb, r, c, fill=128).astype(np.uint8), short)
     missing = np.isnan(window(np.asarray(de, float), r, c))  # off the image
     block = window(np.asarray(de, float), r, c, fill=0.0)
     colours = matplotlib.colormaps[CMAP](Normalize(0.0, vmax)(block))

@@ -16,7 +16,7 @@ import numpy as np
 
 INSET = 9
 """Side of the zoomed inset around the worst pixel, in image pixels (odd: it has a centre)."""
-SPACING = 8
+SPACING = 24
 """Marked pixels lie at least this many pixels apart (in x or y), so their rings do not pile up."""
 CANDIDATES = 4096
 """Pixels considered for the marks, worst first (more than enough to find a few far apart)."""

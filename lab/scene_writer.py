@@ -4,9 +4,12 @@
 mesh (VTK XML PolyData, float64: points, point normals and texture coordinates exactly)
 and texture (PNG, the 8-bit texels). Loading the file again gives the same numbers:
 every float is written with ``repr`` (shortest round-trip form), colours are already on
-the k/255 grid the loader quantises to, meshes are written in model space with the
-object's model-to-world matrix under ``matrix`` (so any affine transform survives, not
-only scale/rotate/translate), and ``normals`` stays "file" (the mesh's own).
+the k/255 grid the loader quantises to (a colour that is not, such as a PyVista light
+kit's warmth, moves by less than half a level), meshes are written in model space with
+the object's model-to-world matrix under ``matrix`` (so any affine transform survives,
+not only scale/rotate/translate), and ``normals`` stays "file" (the mesh's own; the mesh
+reader scales them to unit length again, which may move a last bit). A scene with no
+lights gets one switched-off light, since the loader adds a headlight to a file without.
 
 A scene made by :func:`compare.from_plotter.scene_from_plotter`, a preset, a shape or a
 mesh file can so be saved, read, edited and compared again (``scanlab export SCENE -o
@@ -72,6 +75,9 @@ def scene_to_toml(scene, mesh_files: list[str], texture_files: list[str | None])
     lines += _table("[camera]", dict(
         position=cam.position, focal_point=cam.focal_point, view_up=cam.view_up, view_angle=cam.view_angle,
         clipping_range=cam.clipping_range, parallel=cam.parallel, parallel_scale=cam.parallel_scale))
+    if not scene.lights:  # the loader adds a headlight to a file without lights: say "none on" instead
+        lines += ["# no lights in the scene: one switched off keeps the loader from adding a headlight",
+                  *_table("[[light]]", dict(kind="headlight", on=False))]
     for li in scene.lights:
         lines += _table("[[light]]", dict(
             kind=li.kind, position=li.position, focal_point=li.focal_point, positional=li.positional,

@@ -5,18 +5,18 @@ from compare.worst import pixel_report, window, worst_pixels
 
 
 def test_coverage_mismatch_ranks_first_then_delta_e_then_reading_order():
-    de = np.zeros((20, 30))
-    de[3, 4] = de[3, 29] = 2.0  # a tie: the earlier pixel in reading order wins
-    de[10, 20] = 5.0
-    mismatch = np.zeros((20, 30), bool)
-    mismatch[19, 0] = True
-    assert worst_pixels(de, mismatch) == [(19, 0), (10, 20), (3, 4), (3, 29)]
+    de = np.zeros((90, 120))
+    de[3, 4] = de[3, 80] = 2.0  # a tie: the earlier pixel in reading order wins
+    de[40, 40] = 5.0
+    mismatch = np.zeros((90, 120), bool)
+    mismatch[89, 0] = True
+    assert worst_pixels(de, mismatch) == [(89, 0), (40, 40), (3, 4), (3, 80)]
 
 
 def test_marked_pixels_keep_their_distance_and_identical_images_have_none():
-    de = np.zeros((20, 20))
-    de[5, 5], de[6, 6], de[15, 15] = 3.0, 2.0, 1.0  # (6, 6) is next to the worst one: skipped
-    assert worst_pixels(de, np.zeros_like(de, bool)) == [(5, 5), (15, 15)]
+    de = np.zeros((40, 40))
+    de[5, 5], de[12, 12], de[30, 30] = 3.0, 2.0, 1.0  # (12, 12) is within 24 pixels of the worst one: skipped
+    assert worst_pixels(de, np.zeros_like(de, bool)) == [(5, 5), (30, 30)]
     assert worst_pixels(np.zeros((4, 4)), np.zeros((4, 4), bool)) == []
 
 
