@@ -484,7 +484,7 @@ def parse_scene(raw: bytes, source: str = "<scene>", base: Path | None = None, a
 
 def scene_from_dict(data: dict, source: str = "<scene>", base: Path | None = None,
                     allow_large: bool = False) -> Scene:
-    """Build a validated :class:`Scene` from parsed TOML (see the README for the keys).
+    """Build a validated :class:`Scene` from parsed TOML (docs/scene-files.md lists the keys).
 
     ``allow_large`` lifts the image size limit of MAX_SIZE × MAX_SIZE pixels (up to
     LARGE_SIZE on each side).
