@@ -16,10 +16,9 @@ called, and PyVista itself comes through :func:`compare.vtk_backend.pyvista`):
   scale, clipping range), the window size and the background; depth peeling or
   order-independent transparency.
 
-Polygons become triangles as VTK's OpenGL mapper cuts them: a quad (0, 1, 2) (0, 2, 3);
-a pentagon (0, 1, 2) (2, 3, 4) (4, 0, 2); a hexagon (0, 1, 2) (2, 3, 4) (4, 5, 0)
-(0, 2, 4); larger polygons as a fan from their first point (the same surface for a convex
-polygon); strips with alternating winding.
+Polygons become triangles as VTK's OpenGL mapper cuts them, a fan from the first corner
+((0, 1, 2), (0, 2, 3), ...: measured on bent quads, pentagons, hexagons and heptagons,
+where any other cut shows); strips with alternating winding.
 
 What a scene cannot express raises :class:`PlotterError`, naming the actor and the
 feature: colours mapped from scalars, wireframe or points representation, edges or
@@ -63,17 +62,11 @@ def _items(collection) -> list:
 
 # --------------------------------------------------------------------------- meshes
 def polygon_triangles(n: int) -> list[tuple[int, int, int]]:
-    """The triangles (corner indices) VTK's OpenGL mapper cuts an n-gon into (see the module docstring).
+    """The triangles (corner indices) VTK's OpenGL mapper cuts an n-gon into: a fan from corner 0.
 
     >>> polygon_triangles(4), polygon_triangles(5)
-    ([(0, 1, 2), (0, 2, 3)], [(0, 1, 2), (2, 3, 4), (4, 0, 2)])
+    ([(0, 1, 2), (0, 2, 3)], [(0, 1, 2), (0, 2, 3), (0, 3, 4)])
     """
-    if n == 4:
-        return [(0, 1, 2), (0, 2, 3)]
-    if n == 5:
-        return [(0, 1, 2), (2, 3, 4), (4, 0, 2)]
-    if n == 6:
-        return [(0, 1, 2), (2, 3, 4), (4, 5, 0), (0, 2, 4)]
     return [(0, i, i + 1) for i in range(1, n - 1)]
 
 

