@@ -40,6 +40,8 @@ a { color: #0645ad; }
 .table-box { overflow-x: auto; border: 1px solid var(--rule); }
 table { border-collapse: collapse; width: 100%%; font-variant-numeric: tabular-nums; }
 th, td { padding: 0.3rem 0.5rem; border-bottom: 1px solid var(--rule); text-align: right; white-space: nowrap; }
+th { white-space: normal; vertical-align: bottom; }
+td.wrap { white-space: normal; overflow-wrap: anywhere; min-width: 8rem; }
 th:first-child, td:first-child, th.text, td.text { text-align: left; }
 th button { font: inherit; font-weight: 600; background: none; border: 0; padding: 0; cursor: pointer;
             color: inherit; }
@@ -95,8 +97,9 @@ def _status_class(status: str) -> str:
     return "pass" if status in OK_STATUSES else ("PASSES" if status == "PASSES?" else "FAIL")
 
 
-COLUMNS = (  # heading, text or number, value of a row, shown as
+COLUMNS = (  # heading, text or number, value of a row, shown as; scene and verdict first: seen at 400 px
     ("scene", True, lambda m: m["scene"], None),
+    ("verdict", True, lambda m: m["verdict"]["status"], None),
     ("model / shading", True, lambda m: f"{m['model']} / {m['shading']}", None),
     ("reference", True, lambda m: m["reference"], None),
     ("mean ΔE2000", False, lambda m: m["delta_e_2000"]["mean"], "{:.4f}"),
@@ -104,8 +107,7 @@ COLUMNS = (  # heading, text or number, value of a row, shown as
     ("max ΔE2000", False, lambda m: m["delta_e_2000"]["max"], "{:.2f}"),
     ("over 1", False, lambda m: 100 * m["pixels_over_1"], "{:.3f} %"),
     ("coverage mismatch", False, lambda m: 100 * m["coverage_mismatch"], "{:.3f} %"),
-    ("depth, max steps", False, lambda m: m["depth"]["max_steps"], "{:d}"),
-    ("verdict", True, lambda m: m["verdict"]["status"], None),
+    ("depth Δ, max steps", False, lambda m: m["depth"]["max_steps"], "{:d}"),
 )
 
 
@@ -123,10 +125,11 @@ def summary_table(rows: list[dict]) -> str:
                 label = f"<a href='#{anchor(m['scene'])}'>{label}</a>"
             elif title == "verdict":
                 label = f"<span class='{_status_class(v)}'>{label}</span>"
-            cells.append(f"<td data-sort='{_e(v)}'{' class=text' if text else ''}>{label}</td>")
+            kind = "text wrap" if title == "reference" else ("text" if text else "")
+            cells.append(f"<td data-sort='{_e(v)}'{f' class={chr(39)}{kind}{chr(39)}' if kind else ''}>{label}</td>")
         body.append("<tr>" + "".join(cells) + "</tr>")
-    return (f"<div class='table-box'><table class='sortable' id='summary'><caption class='small'>Click a heading "
-            f"to sort; click a scene to go to its panel.</caption><thead><tr>{head}</tr></thead>"
+    return (f"<p class='small'>Click a heading to sort; click a scene to go to its panel.</p>"
+            f"<div class='table-box'><table class='sortable' id='summary'><thead><tr>{head}</tr></thead>"
             f"<tbody>{''.join(body)}</tbody></table></div>")
 
 

@@ -50,9 +50,11 @@ def test_every_summary_link_lands_on_its_panel(demo_run, browser, width):
     for name in names:
         page.locator("#summary tbody a", has_text=name).click()
         page.wait_for_function(f"location.hash === '#{anchor(name)}'")
-        target = page.evaluate("(() => { const t = document.querySelector(':target');"
-                               " return t && [t.id, t.getBoundingClientRect().top]; })()")
-        assert target[0] == anchor(name) and -1 <= target[1] <= 20, (name, target)
+        target = page.evaluate("(() => { const t = document.querySelector(':target'); const e = document."
+                               "documentElement; return t && [t.id, t.getBoundingClientRect().top,"
+                               " scrollY + innerHeight >= e.scrollHeight - 1]; })()")
+        # at the top of the window, or as near as the page scrolls (the last panel at the page's end)
+        assert target[0] == anchor(name) and -1 <= target[1] and (target[1] <= 20 or target[2]), (name, target)
         page.goto((out / "index.html").as_uri())  # back to the top for the next link
     page.close()
 
@@ -62,9 +64,9 @@ def test_the_summary_table_sorts_by_a_column_both_ways(demo_run, browser):
     page = browser.new_page(viewport={"width": 1280, "height": 900})
     log = watch(page)
     page.goto((out / "index.html").as_uri())
-    column = page.locator("#summary thead th button", has_text="depth, max steps")
+    column = page.locator("#summary thead th button", has_text="depth Δ, max steps")
     values = lambda: [float(v) for v in page.eval_on_selector_all(  # noqa: E731
-        "#summary tbody tr td:nth-child(9)", "cells => cells.map(c => c.dataset.sort)")]
+        "#summary tbody tr td:nth-child(10)", "cells => cells.map(c => c.dataset.sort)")]
     column.click()
     assert values() == sorted(values())
     assert page.locator("#summary thead th[aria-sort=ascending]").count() == 1
