@@ -10,6 +10,9 @@
 - ``separate-specular.png``: a shiny textured sphere in OpenGL's single-colour mode (the
   texture tints the highlight) beside ``GL_SEPARATE_SPECULAR_COLOR`` (the highlight keeps
   the light's colour), with the ΔE2000 map between them: it is the highlight.
+
+The figures are kept in git: they carry no timings, so making them again gives the same
+bytes (tested), and a change shows in ``git status`` only when a picture changed.
 """
 from __future__ import annotations
 
@@ -18,7 +21,8 @@ import os
 import tempfile
 from pathlib import Path
 
-from compare.images import side_by_side_figure
+from compare.comparison import settings_line
+from compare.images import PanelText, side_by_side_figure
 from compare.metrics import compare_frames, coverage_masks
 from lab.loading import load_scene
 from renderer import RenderOptions, render
@@ -49,8 +53,11 @@ def interpolation_figure(out: Path) -> dict:
     m_facing, _ = interpolation_metrics(facing(tilted))
     shared, mismatch = coverage_masks(screen, perspective)
     side_by_side_figure(screen.rgb, perspective.rgb, de, mismatch, m_tilted, out / "interpolation.png",
-                        title="Gouraud colours on a tilted floor", shared=shared,
-                        labels=("screen-linear (course scanline)", "perspective-correct (GPU, VTK)"))
+                        PanelText(title="Gouraud colours on a tilted floor",
+                                  labels=("screen-linear (course scanline)", "perspective-correct (GPU, VTK)"),
+                                  settings=settings_line(tilted, "none, both images are scanlab's",
+                                                         interpolation="screen (left) | perspective (right)")),
+                        shared=shared, coverage=(screen.coverage, perspective.coverage))
     return {"tilted": m_tilted, "facing": m_facing}
 
 
@@ -79,8 +86,11 @@ def separate_specular_figure(out: Path) -> dict:
     metrics, de = compare_frames(single, separate)
     shared, mismatch = coverage_masks(single, separate)
     side_by_side_figure(single.rgb, separate.rgb, de, mismatch, metrics, out / "separate-specular.png",
-                        title="A textured shiny sphere: where does the highlight go?", shared=shared,
-                        labels=("GL_SINGLE_COLOR (texture × everything)", "GL_SEPARATE_SPECULAR_COLOR"))
+                        PanelText(title="A textured shiny sphere: where does the highlight go?",
+                                  labels=("GL_SINGLE_COLOR (texture × everything)", "GL_SEPARATE_SPECULAR_COLOR"),
+                                  settings=settings_line(scene, "none, both images are scanlab's",
+                                                         specular_colour="single (left) | separate (right)")),
+                        shared=shared, coverage=(single.coverage, separate.coverage))
     return metrics
 
 

@@ -116,14 +116,16 @@ def test_compare_out_keeps_foreign_files(tmp_path, capsys):
 
 
 def test_demo_out_keeps_foreign_files(tmp_path, capsys):
-    """demo --out DIR writes PRESET/*, index.html and summary.json, and touches nothing else."""
+    """demo --out DIR writes PRESET/* (with a copy of the scene file), index.html and summary.json, and
+    touches nothing else."""
     out = tmp_path / "out"
     foreign = _foreign(out)
     assert main(["demo", "--out", str(out), "fill-rule"]) == 0
     after = _tree(out)
     assert {k: after[k] for k in foreign} == foreign
     assert set(after) - set(foreign) == {"fill-rule", "index.html", "summary.json"} | {
-        f"fill-rule/{n}" for n in ("ours.png", "vtk.png", "delta_e.png", "side_by_side.png", "metrics.json")}
+        f"fill-rule/{n}" for n in ("ours.png", "vtk.png", "delta_e.png", "side_by_side.png", "metrics.json",
+                                   "scene.toml")}
     assert json.loads((out / "summary.json").read_text())["scenes"][0]["scene"] == "fill-rule"
 
 
