@@ -15,3 +15,55 @@ def test_bounds_leave_out_points_no_triangle_uses():
 def test_bounds_of_a_mesh_without_triangles_use_every_point():
     m = Mesh(np.array([[1.0, 2.0, 3.0], [-1.0, 0.0, 5.0]]), np.zeros((0, 3), np.int64))
     np.testing.assert_array_equal(m.bounds(), [-1, 1, 0, 2, 3, 5])
+
+
+# --------------------------------------------------------------------------- triangulation
+from lab.mesh import fan_triangles, nonconvex_polygons, strip_triangles  # noqa: E402
+
+
+def test_fan_triangles_by_hand():
+    """Triangle, quad, pentagon and a 2-point cell: fans from each polygon's first vertex, in order."""
+    offsets = [0, 3, 7, 12, 14]
+    connectivity = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13]
+    assert fan_triangles(offsets, connectivity).tolist() == [
+        [0, 1, 2], [3, 4, 5], [3, 5, 6], [7, 8, 9], [7, 9, 10], [7, 10, 11]]
+
+
+def test_fan_triangles_of_triangles_only_and_of_nothing():
+    assert fan_triangles([0, 3, 6], [5, 6, 7, 7, 6, 8]).tolist() == [[5, 6, 7], [7, 6, 8]]
+    assert fan_triangles([0], []).shape == (0, 3)
+    assert fan_triangles([], []).shape == (0, 3)
+
+
+def test_strip_triangles_by_hand():
+    """Strip 0..5 and a strip of 3: every second triangle has its last two vertices swapped
+    (VTK's index buffer order), so all keep the first one's winding."""
+    tris = strip_triangles([0, 6, 9], [0, 1, 2, 3, 4, 5, 10, 11, 12])
+    assert tris.tolist() == [[0, 1, 2], [1, 3, 2], [2, 3, 4], [3, 5, 4], [10, 11, 12]]
+    points = np.array([[i // 2, i % 2, 0] for i in range(6)], dtype=float)  # a zig-zag in the plane z = 0
+    p = points[tris[:4]]
+    normals = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    assert (np.sign(normals[:, 2]) == np.sign(normals[0, 2])).all()
+
+
+def test_nonconvex_polygons_only_from_five_vertices():
+    """A concave pentagon is found; a concave quad is not (VTK fans every quad); a convex
+    pentagon and one with a collinear corner (a zero turn, not a wrong one) are not."""
+    points = [[0, 0, 0], [2, 0, 0], [1, 0.5, 0], [2, 2, 0], [0, 2, 0], [2.5, 1, 0], [1, 0, 0]]
+    offsets = [0, 5, 9, 14, 19]
+    connectivity = [0, 1, 2, 3, 4,  # concave at point 2
+                    0, 1, 2, 4,     # a concave quad (a dart)
+                    0, 1, 5, 3, 4,  # convex
+                    0, 6, 1, 3, 4]  # point 6 lies on the edge 0–1
+    assert nonconvex_polygons(points, offsets, connectivity).tolist() == [0]
+
+
+def test_nonconvex_polygons_in_a_tilted_plane():
+    """Convexity is judged in the polygon's own plane, whatever its orientation."""
+    t = np.linspace(0, 2 * np.pi, 7, endpoint=False)
+    flat = np.c_[np.cos(t), np.sin(t), 0 * t]
+    flat[3] *= 0.2  # pull one corner in: concave
+    rotation = np.linalg.qr(np.random.default_rng(3).normal(size=(3, 3)))[0]
+    convex = np.c_[np.cos(t), np.sin(t), 0 * t]
+    points = np.concatenate([convex, flat]) @ rotation.T
+    assert nonconvex_polygons(points, [0, 7, 14], list(range(14))).tolist() == [1]
