@@ -1,4 +1,4 @@
-"""CSG: the implicit definition (``inside``) and the manifold3d mesh agree."""
+"""lab.csg.meshing: the manifold3d mesh is closed, outward, and agrees with the implicit definition."""
 from __future__ import annotations
 
 import math
@@ -216,67 +216,3 @@ def test_oblique_cylinder_and_cone_halfspaces_mesh_correctly():
     mc, err = csg.monte_carlo_volume(node, n=400_000)
     assert csg.mesh_volume(mesh) == pytest.approx(mc, rel=0.01)
     check_classification(node)
-
-
-def test_implicit_values_and_boundary_distances():
-    """f < 0 inside, f > 0 outside for each kind; boundary distances are Euclidean."""
-    p = np.array([[0.0, 0.0, 0.5], [0.0, 0.0, 3.0], [2.0, 0.0, 1.0]])
-    hs = {
-        "plane": csg.HalfSpace.plane((0, 0, 2), 2.0),       # z <= 1
-        "sphere": csg.HalfSpace.sphere((0, 0, 0), 1.0),
-        "cylinder": csg.HalfSpace.cylinder((0, 0, 0), (0, 0, 5), 1.0),
-        "cone": csg.HalfSpace.cone((0, 0, 0), (0, 0, 1), math.pi / 4),
-    }
-    signs = {k: np.sign(csg.implicit_value(h, p)).tolist() for k, h in hs.items()}
-    assert signs == {"plane": [-1, 1, 0], "sphere": [-1, 1, 1], "cylinder": [-1, -1, 1], "cone": [-1, -1, 1]}
-    assert np.allclose(csg.boundary_distance(hs["plane"], p), [0.5, 2.0, 0.0])
-    assert np.allclose(csg.boundary_distance(hs["sphere"], p), [0.5, 2.0, math.sqrt(5) - 1])
-    assert np.allclose(csg.boundary_distance(hs["cylinder"], p), [1.0, 1.0, 1.0])
-    assert np.allclose(csg.boundary_distance(hs["cone"], p), [0.5 / math.sqrt(2), 3 / math.sqrt(2), 1 / math.sqrt(2)])
-    below = np.array([[0.0, 0.0, -1.0]])  # nearest boundary point is the apex
-    assert csg.boundary_distance(hs["cone"], below) == pytest.approx([1.0])
-
-
-@pytest.mark.parametrize("node", [
-    csg.Primitive((csg.HalfSpace.plane((0, 0, 1), 0.0),)),
-    csg.Primitive((csg.HalfSpace.cylinder((0, 0, 0), (0, 0, 1), 1.0),)),
-    csg.Primitive((csg.HalfSpace.cone((0, 0, 0), (0, 0, 1), 0.3),)),
-    csg.Op("difference", (csg.Primitive((csg.HalfSpace.plane((1, 0, 0), 0.0),)), csg.sphere(1.0))),
-])
-def test_unbounded_primitives_are_refused(node):
-    """A primitive that is not bounded (a plane, an infinite cylinder or cone) raises ValueError."""
-    with pytest.raises(ValueError, match="unbounded"):
-        csg.to_mesh(node)
-    with pytest.raises(ValueError, match="unbounded"):
-        csg.monte_carlo_volume(node)
-
-
-@pytest.mark.parametrize("tree, message", [
-    ({"op": "intersection", "children": [
-        {"op": "difference", "children": [{"primitive": "box"}, {"primitive": "spere", "radius": 1.0}]}]},
-     "csg.children[0].children[1]: unknown primitive 'spere'; valid: box, sphere, cylinder, cone, halfspaces"),
-    ({"op": "union", "children": [{"primitive": "box"}, {"primitive": "sphere", "radius": -1}]},
-     "csg.children[1].radius: must be positive, got -1"),
-    ({"op": "union", "children": [{"primitive": "sphere", "radus": 1}]},
-     "csg.children[0]: unknown key 'radus' for primitive 'sphere'; valid: center, primitive, radius"),
-    ({"op": "xor", "children": []}, "csg: unknown op 'xor'; valid: union, difference, intersection"),
-    ({"op": "union", "children": []}, "csg: op 'union' needs a non-empty list 'children'"),
-    ({"primitive": "halfspaces", "halfspaces": [{"plane": [0, 0, 1], "offset": 1}, {"plane": [0, 0], "offset": 1}]},
-     "csg.halfspaces[1].plane: must be a list of 3 finite numbers, got [0, 0]"),
-    ({"primitive": "halfspaces", "halfspaces": [{"sphere": [0, 0, 0]}]}, "csg.halfspaces[0]: missing key 'radius'"),
-    ({"primitive": "cylinder", "axis": "w"}, "csg.axis: must be 'x', 'y', 'z' or a 3-vector, got 'w'"),
-    ({"primitive": "box", "op": "union"}, "csg: a CSG node needs exactly one of the keys"),
-])
-def test_from_dict_errors_name_the_path(tree, message):
-    """Invalid trees raise ValueError whose message starts with the path of the bad node."""
-    with pytest.raises(ValueError) as info:
-        csg.from_dict(tree)
-    assert str(info.value).startswith(message)
-
-
-def test_from_dict_builds_the_convenience_primitives():
-    """Dict primitives equal the Python constructors (defaults as VTK's sources)."""
-    assert csg.from_dict({"primitive": "box", "size": 2}) == csg.box((2, 2, 2))
-    assert csg.from_dict({"primitive": "sphere"}) == csg.sphere(0.5)
-    assert csg.from_dict({"primitive": "cone", "axis": "y", "height": 2}) == csg.cone(0.5, 2.0, axis="y")
-    assert csg.from_dict({"primitive": "cylinder"}, where="object.csg") == csg.cylinder(0.5, 1.0, axis="z")
