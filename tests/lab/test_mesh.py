@@ -1,9 +1,9 @@
-"""The mesh model: bounds as VTK computes them."""
+"""The mesh model: bounds as VTK computes them; polygons and strips cut into triangles as VTK draws them."""
 from __future__ import annotations
 
 import numpy as np
 
-from lab.mesh import Mesh
+from lab.mesh import Mesh, fan_triangles, nonconvex_polygons, strip_triangles
 
 
 def test_bounds_leave_out_points_no_triangle_uses():
@@ -18,9 +18,6 @@ def test_bounds_of_a_mesh_without_triangles_use_every_point():
 
 
 # --------------------------------------------------------------------------- triangulation
-from lab.mesh import fan_triangles, nonconvex_polygons, strip_triangles  # noqa: E402
-
-
 def test_fan_triangles_by_hand():
     """Triangle, quad, pentagon and a 2-point cell: fans from each polygon's first vertex, in order."""
     offsets = [0, 3, 7, 12, 14]

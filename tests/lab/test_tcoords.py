@@ -19,9 +19,11 @@ import vtk
 from lab import shapes
 from lab.loading import make_shape
 from lab.measure import enclosed_volume, surface_area
-from lab.mesh import Mesh, fan_triangles, strip_triangles
+from lab.mesh import Mesh, fan_triangles
 from lab.meshfiles import MeshFileError, read_mesh, write_mesh
 from lab.normals import NORMAL_MODES, split_at_creases, with_normals
+
+from ..mesh_files import vtk_triangles, vtk_write
 
 GLOBE = Path(pv.__file__).parent / "examples" / "globe.vtk"
 
@@ -35,17 +37,6 @@ def textured_sphere():
     mesh = pv.Sphere(theta_resolution=12, phi_resolution=9).texture_map_to_sphere(inplace=False)
     assert mesh.active_texture_coordinates is not None
     return mesh
-
-
-def vtk_triangles(poly):
-    """VTK's polygons fanned and strips cut as VTK's mapper draws them (lab.mesh's functions,
-    checked against VTK renders in tests/compare/test_parity_mesh_files.py)."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-
-    def cells(c):
-        return vtk_to_numpy(c.GetOffsetsArray()), vtk_to_numpy(c.GetConnectivityArray())
-
-    return np.concatenate([fan_triangles(*cells(poly.GetPolys())), strip_triangles(*cells(poly.GetStrips()))])
 
 
 def assert_like_pyvista(path):
@@ -64,14 +55,6 @@ def test_globe_reads_like_pyvista():
     assert GLOBE.is_file()
     mesh = assert_like_pyvista(GLOBE)
     assert mesh.n_points == 540 and mesh.tcoords.min() >= 0 and mesh.tcoords.max() <= 1
-
-
-def vtk_write(writer, mesh, path, **setters):
-    writer.SetInputData(mesh)
-    writer.SetFileName(str(path))
-    for name, value in setters.items():
-        getattr(writer, name)(*([] if value is None else [value]))
-    assert writer.Write() == 1
 
 
 LEGACY = {"ascii_5.1": {"SetFileTypeToASCII": None}, "binary_5.1": {"SetFileTypeToBinary": None},

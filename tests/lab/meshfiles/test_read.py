@@ -12,8 +12,9 @@ import pytest
 import pyvista as pv
 import vtk
 
-from lab.mesh import fan_triangles, strip_triangles
 from lab.meshfiles import MeshFileError, read_mesh
+
+from ...mesh_files import vtk_triangles, vtk_write
 
 
 # --------------------------------------------------------------------------- meshes
@@ -57,18 +58,11 @@ MESHES = {"sphere": sphere, "sphere_no_normals": lambda: sphere(False), "cube": 
           "cube_no_normals": lambda: cube(False), "strips": stripped, "decorated": decorated}
 
 
-def cells(cell_array):
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-
-    return vtk_to_numpy(cell_array.GetOffsetsArray()), vtk_to_numpy(cell_array.GetConnectivityArray())
-
-
 def assert_reads_like_vtk(path):
     """``read_mesh(path)`` holds exactly what ``pyvista.read(path)`` holds, triangulated as VTK draws it."""
     got, ref = read_mesh(path), pv.read(path)
     np.testing.assert_array_equal(got.points, np.asarray(ref.points, dtype=np.float64))
-    triangles = np.concatenate([fan_triangles(*cells(ref.GetPolys())), strip_triangles(*cells(ref.GetStrips()))])
-    np.testing.assert_array_equal(got.triangles, triangles)
+    np.testing.assert_array_equal(got.triangles, vtk_triangles(ref))
     normals = ref.point_data.active_normals
     if normals is None:
         assert got.point_normals is None
@@ -82,14 +76,6 @@ def assert_reads_like_vtk(path):
         np.testing.assert_array_equal(got.tcoords, np.asarray(tcoords, dtype=np.float64))
     assert got.points.dtype == np.float64 and got.triangles.dtype == np.int64
     return got
-
-
-def vtk_write(writer, mesh, path, **setters):
-    writer.SetInputData(mesh)
-    writer.SetFileName(str(path))
-    for name, value in setters.items():
-        getattr(writer, name)(*([] if value is None else [value]))
-    assert writer.Write() == 1
 
 
 # --------------------------------------------------------------------------- formats
