@@ -13,10 +13,10 @@ Conventions
 
 Polygons and triangle strips are triangulated once, here in ``lab/``, the way VTK's OpenGL
 mapper (VTK 9.7) cuts them for drawing: a polygon as a fan from its first vertex (every
-quad, even a concave one, and every convex polygon; VTK cuts a concave polygon of 5 or more
-vertices its own way, which :func:`nonconvex_polygons` finds so that readers can refuse
-it), a strip as consecutive triangles with every second one's last two vertices swapped
-to keep the winding. Both renderers then receive the very same triangles.
+quad, even a concave one, and every polygon whose fan is sound; VTK cuts the others its own
+way, which :func:`unfanned_polygons` finds so that readers can refuse them), a strip as
+consecutive triangles with every second one's last two vertices swapped to keep the
+winding. Both renderers then receive the very same triangles.
 """
 from __future__ import annotations
 
@@ -94,8 +94,8 @@ def fan_triangles(offsets, connectivity) -> np.ndarray:
     -------
     (M, 3) int64 array; a polygon of k vertices gives k − 2 triangles ``(v0, v[j], v[j+1])``,
     j = 1 … k − 2, in order, so the winding is kept; polygons of fewer than 3 vertices
-    give none. This is how VTK's OpenGL mapper draws every quad and every convex polygon
-    (checked by rendering; see :func:`nonconvex_polygons` for the others).
+    give none. This is how VTK's OpenGL mapper draws every quad and every polygon whose
+    fan is sound (checked by rendering; see :func:`unfanned_polygons` for the others).
 
     Examples
     --------
@@ -145,21 +145,21 @@ def strip_triangles(offsets, connectivity) -> np.ndarray:
     return np.column_stack([connectivity[at], connectivity[at + 1 + odd], connectivity[at + 2 - odd]])
 
 
-def nonconvex_polygons(points, offsets, connectivity) -> np.ndarray:
-    """Indices of the polygons of 5 vertices or more that are not convex, in their own plane.
+def unfanned_polygons(points, offsets, connectivity) -> np.ndarray:
+    """Indices of the polygons of 5 vertices or more that VTK's mapper does not draw as a fan.
 
-    A corner turns the wrong way when ``(p − p_prev) × (p_next − p)`` points against the
-    polygon's normal (the sum of those cross products); collinear corners (a zero cross
-    product) do not count. VTK 9.7's mapper draws triangles, quads (concave ones too) and
-    convex polygons as fans (:func:`fan_triangles`), but cuts a concave polygon of 5 or
-    more vertices with an ear-cutting of its own that none of ``vtkPolygon``'s
-    triangulations reproduces (tried by rendering), so a reader refuses these.
+    VTK 9.7's mapper draws a triangle, a quad (even a concave one) and any polygon whose
+    fan from its first vertex is sound as that fan (:func:`fan_triangles`); it cuts the
+    other polygons of 5 vertices or more its own way, which none of ``vtkPolygon``'s
+    triangulations reproduces (both found by rendering). A fan is sound when none of its
+    triangles turns against the polygon: each triangle's normal has a positive part along
+    the polygon's vector area (sum of ``p_i × p_{i+1}``; a flat triangle counts as sound).
 
     Examples
     --------
-    >>> square_with_notch = [[0, 0, 0], [2, 0, 0], [1, 0.5, 0], [2, 2, 0], [0, 2, 0]]
-    >>> nonconvex_polygons(square_with_notch, [0, 5], [0, 1, 2, 3, 4]).tolist()
-    [0]
+    >>> notch = [[0, 0, 0], [2, 0, 0], [1, 0.5, 0], [2, 2, 0], [0, 2, 0]]  # concave at point 2
+    >>> unfanned_polygons(notch, [0, 5, 10], [0, 1, 2, 3, 4, 1, 2, 3, 4, 0]).tolist()
+    [1]
     """
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     offsets = np.asarray(offsets, dtype=np.int64)
@@ -169,15 +169,15 @@ def nonconvex_polygons(points, offsets, connectivity) -> np.ndarray:
     if len(polygons) == 0:
         return polygons
     k = sizes[polygons]
+    first = np.cumsum(k) - k  # where each polygon's corners start in the arrays below
     start = np.repeat(offsets[polygons], k)
-    i = np.arange(k.sum()) - np.repeat(np.cumsum(k) - k, k)  # corner within its polygon
-    kk = np.repeat(k, k)
+    i = np.arange(k.sum()) - np.repeat(first, k)  # corner within its polygon
     here = points[connectivity[start + i]]
-    before = points[connectivity[start + (i - 1) % kk]]
-    after = points[connectivity[start + (i + 1) % kk]]
-    turn = np.cross(here - before, after - here)
-    normal = np.add.reduceat(turn, np.concatenate([[0], np.cumsum(k)[:-1]]))
-    along = np.einsum("ij,ij->i", turn, np.repeat(normal, k, axis=0))
-    scale = np.linalg.norm(turn, axis=1) * np.repeat(np.linalg.norm(normal, axis=1), k)
-    wrong = along < -1e-9 * scale
-    return polygons[np.add.reduceat(wrong, np.concatenate([[0], np.cumsum(k)[:-1]])) > 0]
+    after = points[connectivity[start + (i + 1) % np.repeat(k, k)]]
+    area = np.add.reduceat(np.cross(here, after), first)  # the polygon's vector area (times 2)
+    apex = here[np.repeat(first, k)]
+    fan = np.cross(here - apex, after - apex)  # corner i's fan triangle (apex, i, i+1); zero at the ends
+    along = np.einsum("ij,ij->i", fan, np.repeat(area, k, axis=0))
+    scale = np.linalg.norm(fan, axis=1) * np.repeat(np.linalg.norm(area, axis=1), k)
+    against = along < -1e-12 * scale
+    return polygons[np.add.reduceat(against, first) > 0]

@@ -7,11 +7,14 @@ normal of zeros, or a crash of the whole process. So every positive index is com
 here with the number of ``v``, ``vt`` and ``vn`` lines in the whole file, as VTK resolves
 them (negative, relative indices VTK checks itself).
 
-Two ways, one answer:
+Three ways, from the quickest; each hands on to the next what it cannot settle:
 
-- :func:`_index_maxima`, vectorised: the face lines are cut out with numpy, parsed in one
-  call, and their largest index of each kind taken. It handles the usual files, whose
-  corners all have one form (``a``, ``a/b``, ``a//c`` or ``a/b/c``);
+- :func:`_quick`, for the usual layout (the corners all of one form: ``a``, ``a/b``,
+  ``a//c`` or ``a/b/c``): numpy finds the digit runs of the face lines without parsing
+  them, and compares each kind's longest ones with the number of its lines, digit by
+  digit, a block of lines at a time;
+- :func:`_index_maxima`, any layout: the face lines are cut out, parsed in one call and
+  their largest index of each kind taken;
 - :func:`_scan_lines`, line by line, for any other file and to name the line of the first
   bad index in the error.
 """
@@ -44,27 +47,28 @@ def check(data) -> None:
     ValueError
         ``"line 12: a face refers to vertex 9, but there are 3"``.
     """
-    maxima = None
-    for read in (_faces_last, _statements):  # the usual layout first, cheaply; then any
-        counts, faces = read(data)
-        maxima = None if faces is None else _index_maxima(faces)
-        if maxima is not None:
-            break
+    if _quick(data):
+        return
+    counts, faces = _statements(data)
+    maxima = None if faces is None else _index_maxima(faces)
     if maxima is not None and all(m <= n for m, n in zip(maxima, counts)):
         return
     _scan_lines(bytes(data))
 
 
-def _kinds(a: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Line starts and the first three bytes of each line ("\n" past a line's end)."""
-    starts = np.concatenate([[0], np.flatnonzero(a[:-1] == ord("\n")) + 1]) if len(a) else np.zeros(0, np.int64)
+# --------------------------------------------------------------------------- lines
+def _line_starts(a: np.ndarray) -> np.ndarray:
+    """Where each line of ``a`` starts (a line ends with "\\n" or the end of ``a``)."""
+    if len(a) == 0:
+        return np.zeros(0, dtype=np.int64)
+    return np.concatenate([[0], np.flatnonzero(a[:-1] == ord("\n")) + 1])
+
+
+def _first_bytes(a: np.ndarray, starts: np.ndarray, offset: int) -> np.ndarray:
+    """The byte ``offset`` into each line ("\\n" past a line's end)."""
     ends = np.append(starts[1:], len(a))
-
-    def at(offset):
-        pos = starts + offset
-        return np.where(pos < ends, a[np.minimum(pos, max(len(a) - 1, 0))], ord("\n"))
-
-    return starts, at(0), at(1), at(2)
+    pos = starts + offset
+    return np.where(pos < ends, a[np.minimum(pos, max(len(a) - 1, 0))], ord("\n"))
 
 
 def _counts(c0, c1, c2) -> tuple[int, int, int]:
@@ -85,37 +89,17 @@ def _first_face_line(data) -> int:
     return -1
 
 
-def _faces_last(data) -> tuple[tuple[int, int, int], bytes | None]:
-    """The usual layout, read cheaply: all ``f`` lines come after all others.
-
-    Returns the numbers of ``v``, ``vt``, ``vn`` lines before the first ``f`` line and the
-    bytes from there to the end (:func:`_index_maxima` refuses them if anything but faces
-    is among them), or ``(…, None)`` when the start does not fit.
-    """
-    first = _first_face_line(data)
-    if first < 0:
-        return (0, 0, 0), None
-    faces = bytes(data[first:])
-    if b"\\" in faces:
-        return (0, 0, 0), None
-    a = np.frombuffer(data, dtype=np.uint8)
-    starts = np.concatenate([[0], np.flatnonzero(a[:first] == ord("\n"))[:-1] + 1]) if first else np.zeros(0, int)
-    c0, c1, c2 = a[starts], a[starts + 1], a[starts + 2]  # every line before ``first`` ends in "\n"
-    if ((c0 == _BLANK[0]) | (c0 == _BLANK[1])).any():
-        return (0, 0, 0), None
-    return _counts(c0, c1, c2), faces
-
-
 def _statements(data) -> tuple[tuple[int, int, int], bytes | None]:
     """Numbers of ``v``, ``vt`` and ``vn`` lines, and the bytes of all ``f`` lines, in any layout.
 
-    The face bytes are None for a layout the vectorised way does not read: a statement
+    The face bytes are None for a layout the vectorised ways do not read: a statement
     after leading blanks, or a line continued with a backslash.
     """
     a = np.frombuffer(data, dtype=np.uint8)
     if len(a) == 0:
         return (0, 0, 0), b""
-    starts, c0, c1, c2 = _kinds(a)
+    starts = _line_starts(a)
+    c0, c1, c2 = (_first_bytes(a, starts, k) for k in range(3))
     counts = _counts(c0, c1, c2)
     if ((c0 == _BLANK[0]) | (c0 == _BLANK[1])).any() or data.find(b"\\") >= 0:
         return counts, None
@@ -129,6 +113,149 @@ def _statements(data) -> tuple[tuple[int, int, int], bytes | None]:
     return counts, b"\n".join(bytes(data[s:e]) for s, e in zip(starts[firsts], ends[lasts]))
 
 
+# --------------------------------------------------------------------------- forms
+def _columns(n: int, slashes: int, blanks: int, faces: np.ndarray) -> int | None:
+    """How many numbers each corner holds, if all corners have one form; else None.
+
+    A corner holds at most 3 numbers and 2 slashes (VTK refuses more), and follows at least
+    one blank, so there are at least as many blanks as corners. ``n = 3·blanks`` then
+    means 3 numbers in every corner (``a/b/c``); ``n = 2·blanks`` with 2 slashes a corner
+    means ``a//c`` everywhere; ``n = 2·blanks`` with one slash a corner on average may
+    still mix ``a`` and ``a/b/c``, which :func:`_one_slash_per_corner` tells apart.
+    Returns 1, 2 (``a//c``: the columns are v and vn), -2 (``a/b``: v and vt) or 3.
+    """
+    if slashes == 0:
+        return 1
+    if n == 3 * blanks:
+        return 3
+    if n == 2 * blanks and slashes == 2 * blanks:
+        return 2
+    if n == 2 * blanks and slashes == blanks and _one_slash_per_corner(faces):
+        return -2
+    return None
+
+
+KIND_COLUMNS = {1: (0,), 2: (0, 2), -2: (0, 1), 3: (0, 1, 2)}
+"""For each form, the kind (v 0, vt 1, vn 2) of each number in a corner."""
+
+
+def _one_slash_per_corner(a: np.ndarray) -> bool:
+    """True if no corner holds two slashes: after each '/', its digits end in a blank.
+
+    (With ``2·slashes == numbers`` and no '//', corners ``a`` and ``a/b/c`` in equal
+    numbers give the same totals as corners that are all ``a/b``.)
+    """
+    pos = np.flatnonzero(a == ord("/")) + 1
+    for _ in range(24):  # past the sign and digits of one index
+        c = a[np.minimum(pos, len(a) - 1)]
+        more = (pos < len(a)) & (((c >= ord("0")) & (c <= ord("9"))) | (c == ord("-")) | (c == ord("+")))
+        if not more.any():
+            break
+        pos = pos + more
+    return not ((pos < len(a)) & (a[np.minimum(pos, len(a) - 1)] == ord("/"))).any()
+
+
+# --------------------------------------------------------------------------- the quick way
+BLOCK = 1 << 22
+"""Bytes handled at once by the quick way (whole lines): its arrays stay small and reused."""
+
+
+def _blocks(data, start: int, stop: int):
+    """(begin, end) of consecutive pieces of ``data[start:stop]`` of about BLOCK bytes, each
+    ending after a newline (or at ``stop``)."""
+    while start < stop:
+        end = stop if stop - start <= BLOCK else data.rfind(b"\n", start, start + BLOCK) + 1
+        if end <= start:  # a line longer than a block
+            end = stop if data.find(b"\n", start + BLOCK, stop) < 0 else data.find(b"\n", start + BLOCK, stop) + 1
+        yield start, end
+        start = end
+
+
+def _quick(data) -> bool:
+    """True if the usual layout shows every index within its kind's count, without parsing.
+
+    The usual layout: no line starts with a blank or is continued with a backslash, and
+    the corners of all faces have one form (``a``, ``a/b``, ``a//c`` or ``a/b/c``); other
+    statements (``usemtl``, ``g``, ``s``, more ``v`` ...) may come between the faces.
+    False means "not shown": the exact ways decide. The file is read in blocks of whole
+    lines (:data:`BLOCK`): the ``v``, ``vt``, ``vn`` lines counted first, then the faces.
+    """
+    first = _first_face_line(data)
+    if first < 0 or data.find(b"\\") >= 0:
+        return False
+    a = np.frombuffer(data, dtype=np.uint8)
+    counts = [0, 0, 0]
+    for lo, hi in _blocks(data, 0, len(a)):
+        piece = a[lo:hi]
+        starts = _line_starts(piece)
+        c0, c1, c2 = (_first_bytes(piece, starts, k) for k in range(3))
+        if ((c0 == _BLANK[0]) | (c0 == _BLANK[1])).any():
+            return False
+        counts = [n + m for n, m in zip(counts, _counts(c0, c1, c2))]
+    form = None
+    for lo, hi in _blocks(data, first, len(a)):
+        piece = a[lo:hi]
+        starts = _line_starts(piece)
+        f0, f1 = _first_bytes(piece, starts, 0), _first_bytes(piece, starts, 1)
+        other = ~(((f0 == ord("f")) & ((f1 == _BLANK[0]) | (f1 == _BLANK[1]))) | (f0 == ord("\n")) | (f0 == ord("\r")))
+        if other.any():  # blank out the lines that are not faces: their digits are no indices
+            piece = piece.copy()
+            piece[np.repeat(other, np.diff(np.append(starts, len(piece))))] = ord("\n")
+        here = _runs_within(counts, piece)
+        if here is None or (form is not None and here != form):
+            return False
+        form = here
+    return True
+
+
+def _runs_within(counts, faces: np.ndarray) -> int | None:
+    """The corners' form (see :func:`_columns`) if every index in ``faces`` (whole face
+    lines, uint8) is at most its kind's count; None if that is not shown this way.
+
+    The indices are the digit runs of the lines, found without parsing them; the k-th run
+    belongs to kind ``k mod (numbers per corner)``. A run longer than its count's digits,
+    or as long and greater digit by digit, may be too large (a sign or leading zeros make
+    this cautious, never lenient).
+    """
+    digit = (faces - ord("0")) < 10  # uint8 arithmetic: every other byte wraps past 9
+    edges = np.flatnonzero(digit[1:] != digit[:-1]) + 1  # where runs start and end, in turn
+    if len(digit) and digit[0]:
+        edges = np.concatenate([[0], edges])
+    if len(digit) and digit[-1]:
+        edges = np.append(edges, len(faces))
+    starts, lengths = edges[0::2], edges[1::2] - edges[0::2]
+    slashes = int(np.count_nonzero(faces == ord("/")))
+    blanks = int(np.count_nonzero(faces == _BLANK[0])) + int(np.count_nonzero(faces == _BLANK[1]))
+    form = _columns(len(starts), slashes, blanks, faces)
+    if form is None:
+        return None
+    step = abs(form)
+    within = all(_at_most(faces, starts[c::step], lengths[c::step], counts[kind])
+                 for c, kind in enumerate(KIND_COLUMNS[form]))
+    return form if within else None
+
+
+def _at_most(a: np.ndarray, starts: np.ndarray, lengths: np.ndarray, limit: int) -> bool:
+    """True if every digit run (``starts``, ``lengths`` into ``a``) reads as at most ``limit``."""
+    if len(lengths) == 0:
+        return True
+    if limit <= 0:
+        return False
+    text = str(limit).encode()
+    if lengths.max() > len(text):
+        return False
+    tied = starts[lengths == len(text)]  # as long as the limit: compare digit by digit
+    for j, d in enumerate(text):
+        c = a[tied + j]
+        if (c > d).any():
+            return False
+        tied = tied[c == d]
+        if len(tied) == 0:
+            break
+    return True
+
+
+# --------------------------------------------------------------------------- the exact ways
 def _index_maxima(faces: bytes) -> tuple[int, int, int] | None:
     """The largest vertex, texture coordinate and normal index in ``faces`` (0 where none),
     or None if the corners are not all of one form."""
@@ -141,44 +268,16 @@ def _index_maxima(faces: bytes) -> tuple[int, int, int] | None:
             numbers = np.fromstring(text, dtype=np.int64, sep=" ")
         except (ValueError, DeprecationWarning):  # a token it could not read to the end
             return None
-    a = np.frombuffer(faces, dtype=np.uint8)
-    n, slashes = len(numbers), int(np.count_nonzero(a == ord("/")))
-    if n == 0:
+    if len(numbers) == 0:
         return 0, 0, 0
-    # The totals tell the forms apart: a corner holds at most 3 numbers and 2 slashes (VTK
-    # refuses more), and every corner follows a blank, so there are at least as many
-    # blanks as corners. n = 3·blanks then means 3 numbers in every corner; n = 2·blanks
-    # with 2 slashes a corner means a//c everywhere. n = 2·blanks with one slash a corner
-    # on average may still mix a and a/b/c: _one_slash_per_corner tells.
-    blanks = int(np.count_nonzero(a == ord(" "))) + (faces.count(b"\t") if b"\t" in faces else 0)
-    if slashes == 0:                                                         # a
-        columns = {0: numbers}
-    elif n == 3 * blanks:                                                    # a/b/c
-        columns = {0: numbers[0::3], 1: numbers[1::3], 2: numbers[2::3]}
-    elif n == 2 * blanks and slashes == 2 * blanks:                          # a//c
-        columns = {0: numbers[0::2], 2: numbers[1::2]}
-    elif n == 2 * blanks and slashes == blanks and _one_slash_per_corner(faces):  # a/b
-        columns = {0: numbers[0::2], 1: numbers[1::2]}
-    else:
-        return None
-    return tuple(int(columns[k].max()) if k in columns else 0 for k in range(3))
-
-
-def _one_slash_per_corner(faces: bytes) -> bool:
-    """True if no corner holds two slashes: after each '/', its digits end in a blank.
-
-    (With ``2·slashes == numbers`` and no '//', corners ``a`` and ``a/b/c`` in equal
-    numbers give the same totals as corners that are all ``a/b``.)
-    """
     a = np.frombuffer(faces, dtype=np.uint8)
-    pos = np.flatnonzero(a == ord("/")) + 1
-    for _ in range(24):  # past the sign and digits of one index
-        c = a[np.minimum(pos, len(a) - 1)]
-        more = (pos < len(a)) & (((c >= ord("0")) & (c <= ord("9"))) | (c == ord("-")) | (c == ord("+")))
-        if not more.any():
-            break
-        pos = pos + more
-    return not ((pos < len(a)) & (a[np.minimum(pos, len(a) - 1)] == ord("/"))).any()
+    form = _columns(len(numbers), faces.count(b"/"), faces.count(b" ") + faces.count(b"\t"), a)
+    if form is None:
+        return None
+    step, maxima = abs(form), [0, 0, 0]
+    for c, kind in enumerate(KIND_COLUMNS[form]):
+        maxima[kind] = int(numbers[c::step].max())
+    return tuple(maxima)
 
 
 def _scan_lines(data: bytes) -> None:

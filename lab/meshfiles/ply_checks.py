@@ -226,7 +226,9 @@ def _check_ascii(data, header: Header, arrays) -> None:
     while stop > start and data[stop - 1] in b" \t\r\n":  # trailing blank lines are nothing
         stop -= 1
     body = np.frombuffer(data, dtype=np.uint8, count=stop - start, offset=start)
-    lines = int(np.count_nonzero(body == ord("\n"))) + (1 if stop > start else 0)
+    block = 1 << 22  # counted a block at a time: no array the size of the file
+    lines = sum(int(np.count_nonzero(body[i:i + block] == ord("\n"))) for i in range(0, len(body), block))
+    lines += 1 if stop > start else 0
     records = sum(e.count for e in header.elements)
     newline = data.find(b"\n", start, stop)
     first = data[start:stop if newline < 0 else newline]

@@ -24,7 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-from lab.mesh import Mesh, fan_triangles, nonconvex_polygons, strip_triangles
+from lab.mesh import Mesh, fan_triangles, strip_triangles, unfanned_polygons
 from lab.meshfiles.formats import FORMATS, format_of
 from lab.meshfiles.validate import MeshFileError, make_mesh
 from lab.meshfiles.vtk_readers import read_surface
@@ -80,12 +80,12 @@ def _contents(path):
 
 def _mesh(arrays) -> Mesh:
     """The Mesh of what VTK read: fans of the polygons, then the strips' triangles."""
-    bent = nonconvex_polygons(arrays.points, *arrays.polys)
-    if len(bent):
-        size = np.diff(arrays.polys[0])[bent[0]]
-        raise ValueError(f"polygon {bent[0] + 1} ({size} vertices) is not convex: VTK's renderer does not draw such a "
-                         f"polygon as a fan, and scanlab does not reproduce its cut ({len(bent)} such polygons; "
-                         "triangulate the file first)")
+    unfanned = unfanned_polygons(arrays.points, *arrays.polys)
+    if len(unfanned):
+        size = np.diff(arrays.polys[0])[unfanned[0]]
+        raise ValueError(f"polygon {unfanned[0] + 1} ({size} vertices) is concave where a fan from its first vertex "
+                         f"fails: VTK's renderer cuts such a polygon its own way, which scanlab does not reproduce "
+                         f"({len(unfanned)} such polygons; triangulate the file first)")
     triangles = fan_triangles(*arrays.polys)
     if len(arrays.strips[1]):
         triangles = np.concatenate([triangles, strip_triangles(*arrays.strips)])

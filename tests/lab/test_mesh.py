@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from lab.mesh import Mesh, fan_triangles, nonconvex_polygons, strip_triangles
+from lab.mesh import Mesh, fan_triangles, strip_triangles, unfanned_polygons
 
 
 def test_bounds_leave_out_points_no_triangle_uses():
@@ -43,24 +43,24 @@ def test_strip_triangles_by_hand():
     assert (np.sign(normals[:, 2]) == np.sign(normals[0, 2])).all()
 
 
-def test_nonconvex_polygons_only_from_five_vertices():
-    """A concave pentagon is found; a concave quad is not (VTK fans every quad); a convex
-    pentagon and one with a collinear corner (a zero turn, not a wrong one) are not."""
-    points = [[0, 0, 0], [2, 0, 0], [1, 0.5, 0], [2, 2, 0], [0, 2, 0], [2.5, 1, 0], [1, 0, 0]]
-    offsets = [0, 5, 9, 14, 19]
-    connectivity = [0, 1, 2, 3, 4,  # concave at point 2
-                    0, 1, 2, 4,     # a concave quad (a dart)
+def test_unfanned_polygons_by_hand():
+    """The rule found by rendering with VTK 9.7: a quad is always fanned; a polygon of 5 or
+    more vertices is fanned when no fan triangle turns against it, concave or not."""
+    notch = [[0, 0, 0], [2, 0, 0], [1, 0.5, 0], [2, 2, 0], [0, 2, 0], [2.5, 1, 0], [1, 0, 0]]
+    offsets = [0, 5, 10, 14, 19, 24]
+    connectivity = [0, 1, 2, 3, 4,  # concave at point 2, but the fan from point 0 is sound
+                    1, 2, 3, 4, 0,  # the fan from point 1 has (1, 3, 4) turned against the polygon
+                    1, 2, 3, 0,     # a concave quad (a dart): fanned all the same
                     0, 1, 5, 3, 4,  # convex
-                    0, 6, 1, 3, 4]  # point 6 lies on the edge 0–1
-    assert nonconvex_polygons(points, offsets, connectivity).tolist() == [0]
+                    0, 6, 1, 3, 4]  # point 6 on the edge 0–1: a flat fan triangle is no fault
+    assert unfanned_polygons(notch, offsets, connectivity).tolist() == [1]
 
 
-def test_nonconvex_polygons_in_a_tilted_plane():
-    """Convexity is judged in the polygon's own plane, whatever its orientation."""
-    t = np.linspace(0, 2 * np.pi, 7, endpoint=False)
-    flat = np.c_[np.cos(t), np.sin(t), 0 * t]
-    flat[3] *= 0.2  # pull one corner in: concave
+def test_unfanned_polygons_in_any_plane():
+    """Judged against the polygon's own vector area, whatever its orientation or winding."""
+    notch = np.array([[0, 0, 0], [2, 0, 0], [1, 0.5, 0], [2, 2, 0], [0, 2, 0]], dtype=float)
     rotation = np.linalg.qr(np.random.default_rng(3).normal(size=(3, 3)))[0]
-    convex = np.c_[np.cos(t), np.sin(t), 0 * t]
-    points = np.concatenate([convex, flat]) @ rotation.T
-    assert nonconvex_polygons(points, [0, 7, 14], list(range(14))).tolist() == [1]
+    points = notch @ rotation.T + [5, -2, 1]
+    offsets = [0, 5, 10, 15, 20]
+    connectivity = [0, 1, 2, 3, 4, 1, 2, 3, 4, 0, 0, 4, 3, 2, 1, 1, 0, 4, 3, 2]  # and both reversed, same apex
+    assert unfanned_polygons(points, offsets, connectivity).tolist() == [1, 3]
