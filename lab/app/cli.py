@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 from lab.app import lessons_site
+from lab.app.exercises.command import add_parser as add_exercise_parser
 from lab.loading import LARGE_SIZE, MAX_SIZE, SceneError, load_scene, size_problem
 from lab.presets import SCENES_DIR, preset_description, preset_names
 from lab.scene import MODELS, SHADINGS
@@ -328,6 +329,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--save", default="out/fuzz", metavar="DIR",
                    help="folder for failing inputs, each with a .txt of what happened (default out/fuzz)")
     p.set_defaults(func=cmd_fuzz)
+
+    add_exercise_parser(sub)
 
     p = sub.add_parser("demo", help="compare every preset scene and build a page of side-by-side panels")
     p.add_argument("--out", default="out/demo", metavar="DIR", help="output folder (default out/demo)")

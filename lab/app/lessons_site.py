@@ -196,8 +196,8 @@ def cmd_build(args) -> int:
 def cmd_measure(args) -> int:
     """Measure one figure as a lesson page does and write its images and metrics."""
     from compare.report import write_json
-    from lessons.site.images import write_figure_images
-    from lessons.site.measure import FigureSpec, measure_figure, verdict
+    from lessons.site.figure_images import write_figure_images
+    from lessons.site.measurement import FigureSpec, measure_figure, verdict
 
     spec = FigureSpec(args.scene, args.shading, args.model, args.breakage, args.reference)
     out = Path(args.out)

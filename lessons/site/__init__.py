@@ -1,7 +1,8 @@
 """The lesson site's Sphinx extension (``extensions = ["lessons.site"]`` in ``lessons/conf.py``).
 
 It adds the ``scanlab-figure`` directive (:mod:`lessons.site.figure`: both renderers at
-build time, measured, cached), the ``scanlab-plot`` directive (:mod:`lessons.site.plots`),
+build time, measured, cached), the ``scanlab-plot`` directive (:mod:`lessons.site.plots`), the ``scanlab-exercise``
+directive (:mod:`lessons.site.exercise`: an exercise's page from the exercise registry),
 the ``{src}`` role that names (and checks) the code and tests a lesson teaches
 (:mod:`lessons.site.code`), the words the directives generate in each language (:mod:`lessons.site.i18n`), and the build-wide
 steps of :mod:`lessons.site.pages` (language switch, Japanese search, offline MathJax,
@@ -13,12 +14,13 @@ Importing this package loads nothing heavy; Sphinx calls :func:`setup`.
 
 
 def setup(app):
-    from lessons.site import code, figure, i18n, pages, plots, record
+    from lessons.site import code, exercise, figure, i18n, pages, plots, record
 
     app.add_config_value("scanlab_figure_cache", "", "env", types=[str])
     i18n.setup_catalog(app)
     app.add_directive("scanlab-figure", figure.ScanlabFigure)
     app.add_directive("scanlab-plot", plots.ScanlabPlot)
+    app.add_directive("scanlab-exercise", exercise.ScanlabExercise)
     app.add_role("src", code.src_role)
     app.connect("config-inited", pages.on_config_inited)
     app.connect("builder-inited", pages.on_builder_inited)

@@ -20,7 +20,7 @@ slider that lays ours over VTK's, the metrics and verdict, the scene file and th
 command that reproduces it. All words are generated in the page's language
 (:mod:`lessons.site.i18n`); the images carry none.
 
-Every variant is measured (:func:`lessons.site.measure.measure_figure`) and cached
+Every variant is measured (:func:`lessons.site.measurement.measure_figure`) and cached
 (:mod:`lessons.site.cache`). A variant whose verdict is not the one the lesson promises
 (a passing figure outside the bars, a "break it" figure inside them) is recorded, and
 the build fails (:mod:`lessons.site.pages`).
@@ -37,8 +37,8 @@ from sphinx.util.docutils import SphinxDirective
 from lessons.site import record
 from lessons.site.cache import ROOT, cached, figure_key, source_files
 from lessons.site.i18n import _
-from lessons.site.images import DEPTH_VMAX_LSB, colour_bar_stops, depth_metrics, write_figure_images
-from lessons.site.measure import EXPECTATIONS, FigureSpec, as_expected, command, load, measure_figure, verdict
+from lessons.site.figure_images import DEPTH_VMAX_LSB, colour_bar_stops, depth_metrics, write_figure_images
+from lessons.site.measurement import EXPECTATIONS, FigureSpec, as_expected, command, load, measure_figure, verdict
 
 
 def shading_label(name: str) -> str:

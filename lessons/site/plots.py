@@ -10,7 +10,7 @@ In a lesson::
     ```
 
 Each kind is one function in :data:`PLOTS` taking the figure specs and the axes to draw
-on; it measures through :func:`lessons.site.measure.measure_figure` like every figure.
+on; it measures through :func:`lessons.site.measurement.measure_figure` like every figure.
 matplotlib's object-oriented API only (a ``Figure`` of its own, no pyplot state); the
 labels are in the page's language (Japanese with the IPAex Gothic font), so a plot is
 cached once per language. The PNG bytes depend only on the data and the matplotlib
@@ -29,7 +29,7 @@ from sphinx.util.docutils import SphinxDirective
 from lessons.site import record
 from lessons.site.cache import cached, figure_key, source_files
 from lessons.site.i18n import _
-from lessons.site.measure import FigureSpec, load, measure_figure
+from lessons.site.measurement import FigureSpec, load, measure_figure
 
 PLOTS: dict = {}
 """Plot kinds by name: ``fn(specs, ax, font, lang) -> None`` (``lang`` "en" or "ja")."""

@@ -83,6 +83,11 @@ def test_the_site_has_every_lesson_the_glossary_and_a_chooser(site):
     for lang in ("en", "ja"):
         names = {p.relative_to(site / lang).as_posix() for p in pages(site, lang)}
         assert {f"{d}/index.html" for d in LESSON_DIRS} | {"index.html", "glossary.html", "search.html"} <= names
+    from lab.app.exercises.registry import exercises
+
+    for lang in ("en", "ja"):  # one page per exercise, from the registry the checker reads (issue 14)
+        names = {p.relative_to(site / lang).as_posix() for p in pages(site, lang)}
+        assert {f"exercises/{name}.html" for name in exercises()} | {"exercises/index.html"} <= names
     chooser = (site / "index.html").read_text()
     assert 'href="en/index.html"' in chooser and 'href="ja/index.html"' in chooser and "http" not in chooser
 
@@ -128,7 +133,7 @@ def crawl(site, browser):
 
 
 def test_every_page_loads_offline_with_no_error_every_image_and_something_to_see(crawl):
-    assert len(crawl) == 2 * 16  # 13 lessons, the glossary, the start page, the search page; twice
+    assert len(crawl) == 2 * 25  # 13 lessons, 8 exercises and their index, the glossary, the start page, search; twice
     for (lang, name), seen in crawl.items():
         assert seen["problems"] == [], (lang, name)
         assert seen["broken"] == [], (lang, name)

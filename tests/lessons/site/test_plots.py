@@ -1,7 +1,7 @@
 """lessons/site/plots.py: plots from measured renders, the same bytes every time, labels in each language."""
 from pathlib import Path
 
-from lessons.site.measure import FigureSpec
+from lessons.site.measurement import FigureSpec
 from lessons.site.plots import PLOTS, draw
 
 ROOT = Path(__file__).resolve().parents[3]
