@@ -1,7 +1,7 @@
 """The ``scanlab-exercise`` directive: one exercise's page, from the exercise registry.
 
 ``{scanlab-exercise} NAME`` writes the page of exercise ``NAME``
-(:mod:`lab.app.exercises.registry`): its title and statement in the page's language, the
+(:mod:`lab.app.exercises.exercise_registry`): its title and statement in the page's language, the
 lesson it belongs to (a link), the function's signature, the starter file that
 ``scanlab exercise start`` writes, and the commands that start and check a solution with
 what their exit statuses mean. The statement, the starter and the commands come from the
@@ -32,7 +32,7 @@ class ScanlabExercise(SphinxDirective):
     has_content = False
 
     def run(self) -> list[nodes.Node]:
-        from lab.app.exercises.registry import exercises
+        from lab.app.exercises.exercise_registry import exercises
 
         found = exercises()
         name = self.arguments[0]

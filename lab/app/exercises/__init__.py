@@ -1,6 +1,6 @@
 """Exercises that check themselves (``scanlab exercise list|start|check|grade``).
 
-- :mod:`~lab.app.exercises.registry`: the exercises by name; each lives in one module of
+- :mod:`~lab.app.exercises.exercise_registry`: the exercises by name; each lives in one module of
   :mod:`lab.app.exercises.catalogue` and registers itself.
 - :mod:`~lab.app.exercises.diagnoses`: what can be wrong, by stable code, in English and
   Japanese; one module per family.

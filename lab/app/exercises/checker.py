@@ -16,8 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
-from lab.app.exercises.diagnoses.registry import Finding, status, text
-from lab.app.exercises.registry import Case, Exercise, Output
+from lab.app.exercises.diagnoses.codes import Finding, status, text
+from lab.app.exercises.exercise_registry import Case, Exercise, Output
 from lab.app.exercises.sandbox import Limits, run_submission
 
 VERDICTS = {0: "right", 1: "wrong", 2: "cannot-judge"}

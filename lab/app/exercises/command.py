@@ -21,7 +21,7 @@ class ExerciseUsageError(Exception):
 
 
 def _exercise(name: str):
-    from lab.app.exercises.registry import exercises
+    from lab.app.exercises.exercise_registry import exercises
 
     found = exercises()
     if name not in found:
@@ -36,7 +36,7 @@ def _limits(args) -> Limits:
 
 
 def cmd_list(args) -> int:
-    from lab.app.exercises.registry import LESSONS, exercises
+    from lab.app.exercises.exercise_registry import LESSONS, exercises
 
     found = exercises()
     width = max(map(len, found))

@@ -67,7 +67,7 @@ class _Worker:
 
 def checker_failure(file: Path, message: str, seconds: float) -> dict:
     """The row of a submission the checker itself could not finish."""
-    from lab.app.exercises.diagnoses.registry import Finding, text
+    from lab.app.exercises.diagnoses.codes import Finding, text
 
     finding = Finding("checker-error", {"message": message})
     return {"file": file.name, "verdict": "cannot-judge", "status": 2, "codes": ["checker-error"],

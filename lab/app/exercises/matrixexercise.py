@@ -14,8 +14,8 @@ from typing import Callable
 
 import numpy as np
 
-from lab.app.exercises.diagnoses.registry import Finding
-from lab.app.exercises.registry import Case, Judgement
+from lab.app.exercises.diagnoses.codes import Finding
+from lab.app.exercises.exercise_registry import Case, Judgement
 
 RTOL = 1e-9
 

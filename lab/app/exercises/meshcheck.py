@@ -28,7 +28,7 @@ from typing import Callable
 
 import numpy as np
 
-from lab.app.exercises.diagnoses.registry import Finding
+from lab.app.exercises.diagnoses.codes import Finding
 from lab.mesh import Mesh
 from lab.measure import enclosed_volume, surface_area
 

@@ -15,9 +15,9 @@ from typing import Callable
 
 import numpy as np
 
-from lab.app.exercises.diagnoses.registry import Finding
+from lab.app.exercises.diagnoses.codes import Finding
 from lab.app.exercises.meshcheck import Expected, mesh_findings
-from lab.app.exercises.registry import Case, Judgement
+from lab.app.exercises.exercise_registry import Case, Judgement
 from lab.app.exercises.views import View, compare_meshes, renderable
 from lab.mesh import Mesh
 

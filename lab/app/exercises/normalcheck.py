@@ -26,7 +26,7 @@ from typing import Callable
 
 import numpy as np
 
-from lab.app.exercises.diagnoses.registry import Finding
+from lab.app.exercises.diagnoses.codes import Finding
 
 UNIT_TOLERANCE = 1e-6
 ANGLE_TOLERANCE = 1e-5  # radians

@@ -18,7 +18,7 @@ temporary one, deleted afterwards, so a student who uses ``numba.njit(cache=True
 always gets their current source compiled, never a kernel cached by an earlier check.
 
 Every way a run can end is one :class:`RunResult`: ``ok`` with the arrays, or the code of
-a runtime diagnosis (:mod:`lab.app.exercises.diagnoses.runtime`) with its details.
+a runtime diagnosis (:mod:`lab.app.exercises.diagnoses.runtime_faults`) with its details.
 """
 from __future__ import annotations
 

@@ -28,7 +28,7 @@ def row(report, panels: list[Path], out: Path) -> dict:
 
 def judge(job: dict) -> dict:
     from lab.app.exercises.checker import check_file
-    from lab.app.exercises.registry import get
+    from lab.app.exercises.exercise_registry import get
     from lab.app.exercises.sandbox import Limits
 
     report = check_file(get(job["exercise"]), job["file"], Limits(**job.get("limits", {})))

@@ -2,7 +2,7 @@
 import pytest
 from docutils import nodes
 
-from lab.app.exercises.registry import exercises
+from lab.app.exercises.exercise_registry import exercises
 from lessons.site import exercise
 
 

@@ -14,9 +14,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from lab.app.exercises.diagnoses.registry import Finding
+from lab.app.exercises.diagnoses.codes import Finding
 from lab.app.exercises.rastercases import CLASSES, classify, edge_function_masks, raster_meshes, to_fixed
-from lab.app.exercises.registry import Case, Exercise, Judgement, Output, register
+from lab.app.exercises.exercise_registry import Case, Exercise, Judgement, Output, register
 from lab.app.exercises.starters import starter
 
 TITLE = {"en": "the pixels a triangle covers (the fill rule)", "ja": "三角形が覆う画素（塗りつぶし規則）"}

@@ -10,10 +10,10 @@ from __future__ import annotations
 import numpy as np
 
 from lab import shapes
-from lab.app.exercises.diagnoses.registry import Finding
+from lab.app.exercises.diagnoses.codes import Finding
 from lab.app.exercises.meshcheck import Expected, probe_outward
 from lab.app.exercises.meshexercise import MeshExercise, judge_meshes
-from lab.app.exercises.registry import Case, Exercise, Output, register
+from lab.app.exercises.exercise_registry import Case, Exercise, Output, register
 from lab.app.exercises.starters import MESH_CONVENTIONS, starter
 from lab.app.exercises.views import View
 

@@ -13,7 +13,7 @@ from functools import partial
 import numpy as np
 
 from lab.app.exercises.matrixexercise import MatrixExercise, judge_matrices
-from lab.app.exercises.registry import Case, Exercise, Output, register
+from lab.app.exercises.exercise_registry import Case, Exercise, Output, register
 from lab.app.exercises.starters import starter
 from lab.scene import Camera
 

@@ -8,8 +8,8 @@ import string
 from pathlib import Path
 
 from lab.app.exercises.checker import check_file
-from lab.app.exercises.diagnoses.registry import diagnosis, text
-from lab.app.exercises.registry import get
+from lab.app.exercises.diagnoses.codes import diagnosis, text
+from lab.app.exercises.exercise_registry import get
 from lab.app.exercises.sandbox import Limits
 
 FIXTURES = Path(__file__).parent / "fixtures"

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 from lab.app.exercises.checker import Report, check_file, type_problem
-from lab.app.exercises.diagnoses.registry import Finding
-from lab.app.exercises.registry import get
+from lab.app.exercises.diagnoses.codes import Finding
+from lab.app.exercises.exercise_registry import get
 
 from .checked_fixtures import FIXTURES, LIMITS, judged
 

@@ -2,7 +2,7 @@
 import numpy as np
 
 from lab.app.exercises.matrixexercise import MatrixExercise, judge_matrices
-from lab.app.exercises.registry import Case
+from lab.app.exercises.exercise_registry import Case
 
 CASES = [Case((k,), f"m({k})") for k in (1.0, 2.0, 3.0)]
 RIGHT = lambda case: np.diag([case.args[0], 1, 1, 1]) + np.eye(4, k=1)  # noqa: E731

@@ -2,7 +2,7 @@
 from lab import shapes
 from lab.app.exercises.catalogue.icosphere import SPEC
 from lab.app.exercises.meshexercise import judge_meshes
-from lab.app.exercises.registry import get
+from lab.app.exercises.exercise_registry import get
 
 
 def results(make):

@@ -5,7 +5,7 @@ from lab import shapes
 from lab.app.exercises.catalogue.cone import round_shape as cone_shape
 from lab.app.exercises.catalogue.cylinder import round_shape as cylinder_shape
 from lab.app.exercises.normalcheck import normal_findings
-from lab.app.exercises.registry import Case
+from lab.app.exercises.exercise_registry import Case
 
 CYL = Case((12, 0.5, 1.0), "cylinder(12, 0.5, 1)")
 CONE = Case((12, 0.5, 1.0), "cone(12, 0.5, 1)")

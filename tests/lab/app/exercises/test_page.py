@@ -1,6 +1,6 @@
 """The grades page: one row per submission, both languages, everything a submission made escaped."""
 from lab.app.exercises.page import grades_page
-from lab.app.exercises.registry import get
+from lab.app.exercises.exercise_registry import get
 from lab.app.exercises.sandbox import Limits
 
 ROW = {"file": "<img src=x onerror=alert(1)>.py", "verdict": "cannot-judge", "status": 2, "codes": ["exception"],

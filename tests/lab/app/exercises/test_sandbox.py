@@ -132,7 +132,7 @@ def test_a_student_s_numba_cache_never_serves_an_older_version(tmp_path):
     stamp, only the callee changed) gives the new verdict, because each run's NUMBA_CACHE_DIR
     is a fresh folder, deleted afterwards."""
     from lab.app.exercises.checker import check_file
-    from lab.app.exercises.registry import get
+    from lab.app.exercises.exercise_registry import get
 
     path = tmp_path / "perspective.py"
     path.write_text(NUMBA_SOLUTION)

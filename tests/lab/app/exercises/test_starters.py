@@ -3,7 +3,7 @@ import ast
 
 import pytest
 
-from lab.app.exercises.registry import exercises
+from lab.app.exercises.exercise_registry import exercises
 
 ALL = exercises()
 

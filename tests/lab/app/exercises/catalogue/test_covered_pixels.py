@@ -2,7 +2,7 @@
 mistaken fill rule is classified pixel by pixel and named."""
 import pytest
 
-from lab.app.exercises.registry import get
+from lab.app.exercises.exercise_registry import get
 
 from ..checked_fixtures import expect, judged
 

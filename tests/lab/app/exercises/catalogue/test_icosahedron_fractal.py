@@ -5,7 +5,7 @@ import pytest
 
 from lab import shapes
 from lab.app.exercises.catalogue.icosahedron_fractal import S, centres, expected
-from lab.app.exercises.registry import Case
+from lab.app.exercises.exercise_registry import Case
 from lab.measure import enclosed_volume, surface_area
 
 from ..checked_fixtures import expect, judged

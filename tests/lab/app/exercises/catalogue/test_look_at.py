@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from lab.app.exercises.catalogue.look_at import CASES as CAMERAS, frame, reference
-from lab.app.exercises.registry import Case
+from lab.app.exercises.exercise_registry import Case
 
 from ..checked_fixtures import expect, judged
 

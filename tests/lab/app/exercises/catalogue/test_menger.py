@@ -2,7 +2,7 @@
 the typical mistakes fail with their diagnosis, in English and Japanese."""
 import pytest
 
-from lab.app.exercises.registry import get
+from lab.app.exercises.exercise_registry import get
 
 from ..checked_fixtures import expect, judged
 

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from lab.app.exercises.catalogue.perspective import CASES as CAMERAS, projection, reference
-from lab.app.exercises.registry import Case
+from lab.app.exercises.exercise_registry import Case
 
 from ..checked_fixtures import expect
 

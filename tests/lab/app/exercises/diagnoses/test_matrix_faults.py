@@ -1,5 +1,5 @@
 """Matrices family: each mistake named with the rule that mends it."""
-from lab.app.exercises.diagnoses.registry import Finding, text
+from lab.app.exercises.diagnoses.codes import Finding, text
 
 
 def test_a_mirrored_frame_is_called_left_handed():

@@ -6,7 +6,7 @@ Details: ``case`` is the call (e.g. ``look_at(eye=(3, 2, 4), …)``).
 """
 from __future__ import annotations
 
-from lab.app.exercises.diagnoses.registry import register
+from lab.app.exercises.diagnoses.codes import register
 
 register("matrix-transposed", "matrices",
          "({case}) the matrix is transposed: that is the column-vector form (p' = M·p). The course multiplies row "

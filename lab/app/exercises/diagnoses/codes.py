@@ -58,7 +58,7 @@ def load_families() -> dict[str, Diagnosis]:
     import lab.app.exercises.diagnoses as package
 
     for info in pkgutil.iter_modules(package.__path__):
-        if info.name != "registry":
+        if info.name != "codes":
             importlib.import_module(f"{package.__name__}.{info.name}")
     return DIAGNOSES
 

@@ -18,7 +18,7 @@ from typing import Callable
 
 import numpy as np
 
-from lab.app.exercises.diagnoses.registry import Finding
+from lab.app.exercises.diagnoses.codes import Finding
 
 LESSONS = {
     "01-polygon-model": {"en": "The polygon model", "ja": "ポリゴンモデル"},

@@ -5,7 +5,7 @@ Measured by :func:`lab.app.exercises.meshcheck.normal_findings`.
 """
 from __future__ import annotations
 
-from lab.app.exercises.diagnoses.registry import register
+from lab.app.exercises.diagnoses.codes import register
 
 register("normals-not-unit", "normals",
          "({case}) {count} normals are not of length 1 (e.g. length {length:.4g} at point {example}): divide each "

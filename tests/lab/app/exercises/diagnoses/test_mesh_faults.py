@@ -1,5 +1,5 @@
 """Mesh family: the figures of the surface in the message."""
-from lab.app.exercises.diagnoses.registry import Finding, text
+from lab.app.exercises.diagnoses.codes import Finding, text
 
 
 def test_mesh_messages_quote_the_figures():

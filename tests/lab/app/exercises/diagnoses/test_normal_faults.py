@@ -1,5 +1,5 @@
 """Normals family: the formula to use is in the message."""
-from lab.app.exercises.diagnoses.registry import Finding, text
+from lab.app.exercises.diagnoses.codes import Finding, text
 
 
 def test_the_side_normal_formula_is_quoted_in_both_languages():

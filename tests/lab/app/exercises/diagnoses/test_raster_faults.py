@@ -1,5 +1,5 @@
 """Raster family: the pixel classes with the first pixel and triangles of each."""
-from lab.app.exercises.diagnoses.registry import Finding, text
+from lab.app.exercises.diagnoses.codes import Finding, text
 
 
 def test_the_raster_summary_names_the_first_pixel_of_each_class():

@@ -6,7 +6,7 @@ the checker adds ``call`` (the call that failed, e.g. ``menger(2)``) and ``file`
 """
 from __future__ import annotations
 
-from lab.app.exercises.diagnoses.registry import register
+from lab.app.exercises.diagnoses.codes import register
 
 
 def _where_en(d: dict) -> str:

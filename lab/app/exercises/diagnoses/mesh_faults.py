@@ -6,7 +6,7 @@ message quotes. Measured by :mod:`lab.app.exercises.meshcheck` and :mod:`lab.app
 """
 from __future__ import annotations
 
-from lab.app.exercises.diagnoses.registry import register
+from lab.app.exercises.diagnoses.codes import register
 
 register("no-triangles", "mesh",
          "({case}) the mesh has no triangles",

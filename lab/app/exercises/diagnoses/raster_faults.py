@@ -9,7 +9,7 @@ when the mismatches have its signature.
 """
 from __future__ import annotations
 
-from lab.app.exercises.diagnoses.registry import register
+from lab.app.exercises.diagnoses.codes import register
 
 _CLASS_EN = {"missing": "missing", "duplicated": "duplicated", "unexpected": "unexpected"}
 _CLASS_JA = {"missing": "欠け", "duplicated": "重複", "unexpected": "余分"}

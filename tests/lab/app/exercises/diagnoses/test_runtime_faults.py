@@ -1,5 +1,5 @@
 """Runtime family: what failed, where, while running which call."""
-from lab.app.exercises.diagnoses.registry import Finding, text
+from lab.app.exercises.diagnoses.codes import Finding, text
 
 
 def test_runtime_messages_say_where_and_what():

@@ -3,7 +3,7 @@ import ast
 
 import pytest
 
-from lab.app.exercises.registry import EXERCISES, LESSONS, Exercise, exercises, get, register
+from lab.app.exercises.exercise_registry import EXERCISES, LESSONS, Exercise, exercises, get, register
 
 ALL = exercises()
 

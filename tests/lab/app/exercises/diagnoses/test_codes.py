@@ -1,7 +1,7 @@
 """The diagnosis registry: stable codes, each in one family, in English and Japanese."""
 import pytest
 
-from lab.app.exercises.diagnoses.registry import FAMILIES, Diagnosis, Finding, load_families, register, status, text
+from lab.app.exercises.diagnoses.codes import FAMILIES, Diagnosis, Finding, load_families, register, status, text
 
 ALL = load_families()
 
