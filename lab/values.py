@@ -50,11 +50,12 @@ def finite(x) -> float | None:
 
 def file_problem(path) -> str | None:
     """Why ``path`` cannot be read as a regular file ("No such file or directory", "File
-    name too long", "is a folder", "not a regular file" for a device or pipe ...), or None."""
+    name too long", "is a folder, not a regular file", "not a regular file" for a device or
+    pipe ...), or None."""
     try:
         mode = os.stat(path).st_mode
     except (OSError, ValueError) as exc:  # ValueError: a NUL byte in the name
         return getattr(exc, "strerror", None) or str(exc)
     if stat.S_ISDIR(mode):
-        return "is a folder"
+        return "is a folder, not a regular file"
     return None if stat.S_ISREG(mode) else "not a regular file"
