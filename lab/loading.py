@@ -23,7 +23,7 @@ from lab.presets import preset_names, preset_path
 from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, TRANSPARENCIES, Camera, Image,
                        Light, Material, RenderSettings, Scene, SceneObject, headlight)
 from lab.suggest import did_you_mean
-from lab.values import MAX_MAGNITUDE, file_problem, real, show
+from lab.values import IS_A_FOLDER, MAX_MAGNITUDE, file_problem, real, show
 from lab.matrices import model_matrix
 from lab.validation import SceneError, Table, quantise_colour
 
@@ -259,7 +259,7 @@ def resolve_path(base: Path | None, value: str) -> Path:
                              f"its files: {', '.join(known)}")
         return path
     path = Path(value) if base is None else base / value
-    if file_problem(path) == "is a folder":
+    if file_problem(path) == IS_A_FOLDER:
         raise ValueError(f"{path}: is a folder, not a file")
     return path
 
@@ -376,7 +376,7 @@ def load_scene(path_or_name, allow_large: bool = False) -> Scene:
             hint = did_you_mean(text.partition(":")[0], [*preset_names(), *shapes.SHAPES]) if len(text) <= 200 else ""
             raise SceneError(f"{text if len(text) <= 200 else text[:199] + '…'}: no such scene file, preset or shape"
                              f"{hint} (shapes: {', '.join(shapes.SHAPES)}; presets: `scanlab scenes`)")
-        elif file_problem(path) in (None, "is a folder"):
+        elif file_problem(path) in (None, IS_A_FOLDER):
             from lab.mesh_scene import mesh_file_scene  # same floor; it builds on this module
 
             return mesh_file_scene(path)

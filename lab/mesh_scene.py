@@ -11,7 +11,7 @@ from pathlib import Path
 
 from lab.loading import SceneError, framed_scene
 from lab.scene import Scene
-from lab.values import file_problem
+from lab.values import IS_A_FOLDER, file_problem
 
 
 def mesh_file_scene(path) -> Scene:
@@ -24,7 +24,7 @@ def mesh_file_scene(path) -> Scene:
     from lab.meshfiles import MeshFileError, read_mesh
 
     path = Path(path)
-    if file_problem(path) == "is a folder":
+    if file_problem(path) == IS_A_FOLDER:
         raise SceneError(f"{path}: is a folder, not a scene file or mesh file")
     try:
         mesh = read_mesh(path)

@@ -28,7 +28,7 @@ from lab.mesh import Mesh, fan_triangles, strip_triangles, unfanned_polygons
 from lab.meshfiles.formats import FORMATS, format_of
 from lab.meshfiles.validate import MeshFileError, make_mesh
 from lab.meshfiles.vtk_readers import read_surface
-from lab.values import file_problem
+from lab.values import IS_A_FOLDER, file_problem
 
 
 def read_mesh(path) -> Mesh:
@@ -49,10 +49,12 @@ def read_mesh(path) -> Mesh:
         One line, ``"<path>: <what is wrong>"``: unknown suffix, missing or unreadable
         file, anything VTK's reader reports, or anything wrong in what it read.
     """
+    problem = file_problem(path)
+    if problem == IS_A_FOLDER:  # before the suffix: a folder named "models" has none
+        raise MeshFileError(f"{path}: cannot read file: {problem}")
     fmt = format_of(path)
     if fmt is None:
         raise MeshFileError(f"{path}: unknown mesh file suffix {Path(path).suffix!r} (known: {', '.join(FORMATS)})")
-    problem = file_problem(path)
     if problem:
         raise MeshFileError(f"{path}: cannot read file: {problem}")
     try:

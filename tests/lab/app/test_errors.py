@@ -261,7 +261,7 @@ CASES = [
     Case("mesh-missing", render(), ["{dir}/scene.toml", "object[0].mesh", "{dir}/none.ply", "No such file"],
          {"scene.toml": mesh_scene("none.ply")}),
     Case("mesh-is-a-folder", render(), ["{dir}/scene.toml", "object[0].mesh", "{dir}/dir.ply",
-                                        "is a folder, not a regular file"],
+                                        "is a folder"],
          {"scene.toml": mesh_scene("dir.ply"), "dir.ply/": ""}),
     Case("mesh-is-a-folder-without-suffix", render(), ["{dir}/scene.toml", "object[0].mesh", "{dir}/models",
                                                        "is a folder"],
