@@ -11,6 +11,7 @@ import os
 import sys
 from pathlib import Path
 
+from lab.app.sweep import command as sweep_command
 from lab.loading import LARGE_SIZE, MAX_SIZE, SceneError, load_scene, size_problem
 from lab.presets import SCENES_DIR, preset_description, preset_names
 from lab.scene import MODELS, SHADINGS
@@ -331,6 +332,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", default="out/demo", metavar="DIR", help="output folder (default out/demo)")
     p.add_argument("scenes", nargs="*", help="presets to run (default: all)")
     p.set_defaults(func=cmd_demo)
+
+    sweep_command.add_parser(sub, UsageError)
     return parser
 
 
