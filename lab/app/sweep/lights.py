@@ -41,9 +41,10 @@ LIGHT_SETS: dict[str, LightSet] = {
                          "a white key light and a dim blue fill from the lower right"),
     "point": LightSet((_camera_light((0.4, 0.5, 0.9), positional=True, attenuation=(1.0, 0.1, 0.0)),),
                       "one positional light near the camera, with linear attenuation"),
-    "spot": LightSet((_camera_light((0.3, 0.6, 1.0), positional=True, cone_angle=20.0, exponent=8.0),
+    "spot": LightSet((_camera_light((0.3, 0.6, 1.0), positional=True, cone_angle=6.0, exponent=2.0),
                       Light(kind="headlight", intensity=0.2)),
-                     "a 20° spot light (exponent 8) aimed at the focal point, and a dim headlight"),
+                     "a 6° spot light (exponent 2) aimed at the focal point, its edge across a framed "
+                     "object, and a dim headlight"),
     "rgb": LightSet((_camera_light((-1.0, 0.5, 1.0), (1.0, 0.2, 0.2), intensity=0.7),
                      _camera_light((1.0, 0.5, 1.0), (0.2, 1.0, 0.2), intensity=0.7),
                      _camera_light((0.0, -1.0, 1.0), (0.2, 0.2, 1.0), intensity=0.7)),

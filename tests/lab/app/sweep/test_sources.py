@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from lab.app.sweep.sources import find_sources, load_source, mesh_scene
-from lab.loading import SceneError, load_scene
+from lab.loading import SceneError, default_camera, load_scene
 from lab.meshfiles import write_mesh
 from lab.presets import SCENES_DIR
 
@@ -48,8 +48,9 @@ def test_a_mesh_file_is_framed_and_lit_as_a_built_in_shape():
     scene, shape = mesh_scene(str(TORUS)), load_scene("cube")
     assert scene.objects[0].material == shape.objects[0].material and scene.lights == shape.lights
     assert scene.objects[0].mesh.n_triangles == load_scene("torus-mesh").objects[0].mesh.n_triangles
-    centre = (scene.world_bounds()[0::2] + scene.world_bounds()[1::2]) / 2
-    assert np.allclose(scene.camera.focal_point, centre)
+    framed = default_camera(scene.world_bounds())
+    assert np.allclose(scene.camera.position, framed.position) and np.allclose(scene.camera.focal_point,
+                                                                               framed.focal_point)
     assert load_source("mesh", str(TORUS)).objects[0].name == "torus"
 
 
