@@ -41,6 +41,12 @@ def open_client(scheduler: str | None, workers: int, memory_limit: int, connect_
     try:
         if scheduler:
             client = Client(scheduler, timeout=connect_timeout)
+            try:
+                client.wait_for_workers(1, timeout=120)
+            except TimeoutError:
+                client.close()
+                raise ClusterError(f"--scheduler {scheduler}: no worker has joined it in 120 s "
+                                   f"(start some with `dask worker {scheduler}`)") from None
         else:
             with dask.config.set({"distributed.scheduler.allowed-failures": 1,
                                   "distributed.scheduler.worker-saturation": 1.0}):

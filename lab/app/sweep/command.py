@@ -44,14 +44,17 @@ def _epilog() -> str:
             "--grid lights=headlight,spot --grid size=256x192 --out out/sweep")
 
 
-def _count(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, got {text!r}")
-    return value
+def _whole(least: int):
+    """An argparse type: a whole number of at least ``least``."""
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
+        if value < least:
+            raise argparse.ArgumentTypeError(f"must be at least {least}, got {text!r}")
+        return value
+    return parse
 
 
 def _seconds(text: str) -> float:
@@ -77,16 +80,6 @@ def _bytes(text: str) -> int:
     return int(value)
 
 
-def _worst(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"must be 0 or more, got {text!r}")
-    return value
-
-
 def add_parser(sub, usage_error: type[Exception]) -> argparse.ArgumentParser:
     """Add ``sweep`` to the CLI's subcommands; ``usage_error`` is raised for bad input."""
     p = sub.add_parser("sweep", help="compare many sources × settings on a Dask cluster; a table and a page",
@@ -98,13 +91,13 @@ def add_parser(sub, usage_error: type[Exception]) -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, metavar="DIR", help="output folder; the same DIR resumes a sweep")
     p.add_argument("--scheduler", metavar="ADDRESS",
                    help="a running Dask scheduler, e.g. tcp://host:8786 (default: start a local cluster)")
-    p.add_argument("--workers", type=_count, metavar="N",
+    p.add_argument("--workers", type=_whole(1), metavar="N",
                    help=f"worker processes of the local cluster (default: the number of cores, {os.cpu_count()})")
     p.add_argument("--timeout", type=_seconds, default=120.0, metavar="S",
                    help="time limit of one case in seconds (default 120); its process is then killed")
     p.add_argument("--memory-limit", type=_bytes, default=8 << 30, metavar="SIZE",
                    help="address-space limit of a case's process, e.g. 8G (default) or none")
-    p.add_argument("--worst", type=_worst, default=12, metavar="N",
+    p.add_argument("--worst", type=_whole(0), default=12, metavar="N",
                    help="keep frames and draw panels for the N worst cases (default 12)")
     p.add_argument("--keep-all", action="store_true", help="keep frames and draw panels for every case")
     p.add_argument("--retry-errors", action="store_true",

@@ -25,7 +25,7 @@ class CaseRunner(WorkerPlugin):
     """Keeps a :class:`CaseProcess` per worker thread; ``memory_limit`` in bytes (0: none)."""
 
     name = PLUGIN_NAME
-    idempotent = True
+    idempotent = False  # a new sweep replaces it: the old case processes close, its memory limit applies
 
     def __init__(self, memory_limit: int = 0):
         self.memory_limit = memory_limit

@@ -4,7 +4,9 @@
 - a sweep killed (SIGKILL), run again and interrupted (SIGINT), and run a third time ends
   with every case once, none run twice;
 - cases made to hang, crash, run out of memory, raise, or lose their worker are recorded
-  as such and the others complete.
+  as such and the others complete;
+- a sweep runs on a cluster started with ``dask scheduler`` and ``dask worker``, as the
+  README shows.
 """
 from __future__ import annotations
 
@@ -12,9 +14,13 @@ import contextlib
 import json
 import os
 import signal
+import socket
 import subprocess
+import sys
 import time
 from pathlib import Path
+
+from distributed import Client
 
 from lab.app import cli
 from lab.app.sweep.sweep import SweepOptions, plan
@@ -140,3 +146,33 @@ def test_cases_that_hang_crash_run_out_of_memory_or_lose_their_worker_are_record
                                                                if r["setting_fault"] == "lose-worker")], \
         "the lose-worker case lost its worker once"
     assert all(r["verdict"] == "pass" for r in rows if r["status"] == "ok")
+
+
+def test_a_sweep_runs_on_a_cluster_started_with_dask_scheduler_and_dask_worker(tmp_path):
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
+    dask = str(Path(sys.executable).parent / "dask")
+    address = f"tcp://127.0.0.1:{port}"
+    started = [subprocess.Popen([dask, "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)]
+    try:
+        started.append(subprocess.Popen([dask, "worker", address, "--nworkers", "2", "--nthreads", "1",
+                                         "--no-dashboard"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                        start_new_session=True))
+        with Client(address, timeout="60s") as client:
+            client.wait_for_workers(2, timeout=120)
+            workers = set(client.scheduler_info()["workers"])
+        out = tmp_path / "sweep"
+        done = subprocess.run(sweep_command(out, ["cube", "icosphere:level=1"], ["shading=flat,phong"],
+                                            "--scheduler", address), capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, done.stderr
+        assert f"on 2 workers ({address})" in done.stdout
+        rows = table_rows(out)
+        assert len(rows) == 4 and {r["status"] for r in rows} == {"ok"}
+        assert {r["worker"] for r in rows} <= workers, "the cases ran on that cluster's workers"
+    finally:
+        for process in started:
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(process.pid, signal.SIGTERM)
+            process.wait(60)
