@@ -10,13 +10,14 @@ OUT    ?= out/demo
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e '.[test]'
+	$(PY) -m pip install --quiet -e '.[test,lessons]'
 	@rm -f $(VENV)/.installed-* && touch $@
 
 venv: $(STAMP)
 
 demo: $(STAMP)
 	$(PY) -m lab demo --out $(OUT)
+	$(PY) -m lab lessons build --out out/lessons
 
 test: $(STAMP)
 	$(PY) -m pytest -q

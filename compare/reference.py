@@ -16,9 +16,10 @@ import time
 
 import numpy as np
 
+from compare.lit_reference.lit_registry import lit_reference
 from compare.textbook_reference import (NATIVE, SHADER, eye_lights, lit_colours, object_reference, paint_unlit,
-                                       phong_shader, replace_light_shader, with_gl_colours)
-from compare.vtk_backend import pyvista
+                                       phong_shader, replace_light_shader, uses_separate_specular, with_gl_colours)
+from compare.vtk_backend import pyvista, vtk, vtk_to_numpy
 from lab.frame import Frame
 
 INTERPOLATION = {"flat": 0, "gouraud": 1, "phong": 2}  # VTK_FLAT, VTK_GOURAUD, VTK_PHONG
@@ -46,38 +47,20 @@ def _texture(pv, texture):
 
 
 def vtk_material(obj, scene) -> dict:
-    """The vtkProperty values that draw ``obj``'s material with VTK's own lighting.
-
-    For the vtk model, the scene's values. For a textbook model (``--reference
-    vtk-native``), VTK's nearest equivalent, so that what remains is the difference of
-    the models, not of the numbers: opengl's ambient ``(Ga + ΣLa)·Ma`` becomes VTK's
-    ambient colour, ``Md`` and ``Ms`` its diffuse and specular colours (coefficients 1),
-    and shininess/4 its specular power (Phong's (r·v)^p is close to Blinn's (n·h)^(4p));
-    the classic model maps one to one (``O·A``, Ka; O, Kd; white, Ks; n).
-    """
-    m = obj.material
-    if m.reflection_model == "opengl":
-        la = sum((np.asarray(li.ambient_color) for li in scene.lights if li.on), np.zeros(3))
-        amb = np.clip((np.asarray(scene.render.global_ambient) + la) * m.gl_ambient, 0.0, 1.0)
-        return dict(ambient_color=amb, ambient=1.0, diffuse_color=m.gl_diffuse, diffuse=1.0,
-                    specular_color=m.gl_specular, specular=1.0, power=m.shininess / 4.0)
-    if m.reflection_model == "classic":
-        return dict(ambient_color=np.asarray(m.color) * np.asarray(scene.render.ambient), ambient=m.ambient,
-                    diffuse_color=np.asarray(m.color), diffuse=m.diffuse, specular_color=np.ones(3),
-                    specular=m.specular, power=m.specular_power)
-    return dict(ambient_color=m.color, ambient=m.ambient, diffuse_color=m.color, diffuse=m.diffuse,
-                specular_color=m.effective_specular_color, specular=m.specular, power=m.specular_power)
+    """The vtkProperty values that draw ``obj``'s material with VTK's own lighting: for the vtk
+    model the scene's values; for a textbook model (``--reference vtk-native``) VTK's nearest
+    equivalent (its model's ``vtk_property``, :mod:`compare.lit_reference`)."""
+    return lit_reference(obj).vtk_property(obj, scene)
 
 
 def _actor(pv, obj, scene):
-    import vtk
-
-    mapper = vtk.vtkPolyDataMapper()
+    vtk_ = vtk()
+    mapper = vtk_.vtkPolyDataMapper()
     mapper.SetInputData(_polydata(pv, obj.mesh))
     mapper.ScalarVisibilityOff()
-    actor = vtk.vtkActor()
+    actor = vtk_.vtkActor()
     actor.SetMapper(mapper)
-    user = vtk.vtkMatrix4x4()
+    user = vtk_.vtkMatrix4x4()
     column = obj.model_to_world.T  # VTK multiplies column vectors: its matrix is our transpose
     for i in range(4):
         for j in range(4):
@@ -104,9 +87,7 @@ def _light(light, camera):
     """A vtkLight for a scene light. An "eye" light (view coordinates) becomes a camera
     light: VTK's camera frame puts the eye at (0, 0, 1) in units of the camera distance d,
     so view point (x, y, z) is camera-light point (x/d, y/d, z/d + 1)."""
-    import vtk
-
-    v = vtk.vtkLight()
+    v = vtk().vtkLight()
     position, focal = light.position, light.focal_point
     if light.kind == "eye":
         d = float(np.linalg.norm(np.subtract(camera.position, camera.focal_point)))
@@ -164,9 +145,9 @@ def _set_transparency(pl, mode: str):
 def build_plotter(scene, reference: str | None = None):
     """A PyVista offscreen plotter holding the scene, ready to render (not yet rendered).
 
-    Objects with a textbook model are drawn as unlit colours lit by
-    :mod:`compare.textbook_reference`, unless ``reference="vtk-native"`` asks for VTK's
-    own shading of every object.
+    Objects with a textbook model are drawn as unlit colours lit by their model's lit
+    reference, or with a replaced shader (:mod:`compare.textbook_reference`), unless
+    ``reference="vtk-native"`` asks for VTK's own shading of every object.
     """
     pv = pyvista()
     width, height = scene.image.size
@@ -188,8 +169,7 @@ def build_plotter(scene, reference: str | None = None):
         lights = with_gl_colours(eye_lights(pl.renderer), scene)
         for obj, actor in textbook:
             if object_reference(obj, reference) == SHADER:
-                replace_light_shader(actor, phong_shader(obj, scene, lights),
-                                     scene.render.separate_specular and obj.material.reflection_model == "opengl")
+                replace_light_shader(actor, phong_shader(obj, scene, lights), uses_separate_specular(obj, scene))
             else:
                 paint_unlit(actor, *lit_colours(obj, actor, pl.renderer, scene, lights))
     return pl
@@ -197,15 +177,13 @@ def build_plotter(scene, reference: str | None = None):
 
 def read_frame(pl) -> Frame:
     """The rendered colour and depth buffers as a :class:`Frame` (row 0 at the top)."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    import vtk
-
+    vtk_ = vtk()
     rw = pl.ren_win
     width, height = rw.GetSize()
-    rgba = vtk.vtkUnsignedCharArray()
+    rgba = vtk_.vtkUnsignedCharArray()
     rw.GetRGBACharPixelData(0, 0, width - 1, height - 1, 0, rgba, 0)  # back buffer, left
     rgb = vtk_to_numpy(rgba).reshape(height, width, 4)[::-1, :, :3]
-    z = vtk.vtkFloatArray()
+    z = vtk_.vtkFloatArray()
     rw.GetZbufferData(0, 0, width - 1, height - 1, z)
     depth = vtk_to_numpy(z).reshape(height, width)[::-1].astype(np.float64)
     return Frame(rgb=np.ascontiguousarray(rgb), depth=np.ascontiguousarray(depth), coverage=depth < 1.0)

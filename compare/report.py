@@ -14,7 +14,7 @@ from compare.images import delta_e_figure, side_by_side_figure
 from lab.png import write_png
 from compare.metrics import compare_frames, coverage_masks
 from compare.reference import render_reference
-from compare.textbook_reference import scene_reference
+from compare.textbook_reference import scene_reference, uses_separate_specular
 from lab.atomic import write_text
 
 OUTPUT_FILES = ("ours.png", "vtk.png", "delta_e.png", "side_by_side.png", "metrics.json")
@@ -55,7 +55,7 @@ def reference_label(scene, reference: str | None = None) -> str:
     the texture (a float vertex attribute or the replaced shader's own term, added after
     VTK's texture modulation in the same render)."""
     name = scene_reference(scene, reference)
-    separate = scene.render.separate_specular and any(o.material.reflection_model == "opengl" for o in scene.objects)
+    separate = any(uses_separate_specular(o, scene) for o in scene.objects)
     return name + "+separate-specular" if separate and name != "vtk-native" else name
 
 

@@ -1,11 +1,15 @@
-"""References for the textbook models: VTK draws colours that numpy lit.
+"""References for the textbook models: VTK draws colours that numpy lit, or a replaced shader.
 
 VTK cannot light the way fixed-function OpenGL or the course does (its "Gouraud" is
 per-pixel Phong). So for an object with ``model = "opengl" | "classic"`` the colours are
-computed here — per vertex for gouraud, per triangle for flat — by
-:mod:`compare.textbook_lighting` (numpy, written apart from ``renderer/``), and VTK draws
-them unlit as point or cell RGB. VTK then checks our rasterisation and (perspective-
-correct) colour interpolation, and the numpy code checks our lighting.
+computed by the model's lit reference (:mod:`compare.lit_reference`: numpy, written apart
+from ``renderer/``) — per vertex for gouraud, per triangle for flat — and VTK draws them
+unlit as point or cell RGB; for phong, VTK's fragment lighting is replaced by GLSL of the
+model's formula. VTK then checks our rasterisation and (perspective-correct) colour
+interpolation, and the numpy code checks our lighting. Which reference an object gets,
+and everything model-specific, comes from
+:data:`compare.lit_reference.lit_registry.LIT_REFERENCES`; this module holds the VTK
+plumbing they share.
 
 Everything is taken from VTK's own objects: the model and view matrices of the actor and
 camera, and each light's transformed position after VTK has placed headlights and camera
@@ -16,20 +20,22 @@ from __future__ import annotations
 
 import numpy as np
 
-from compare.textbook_lighting import (EyeLight, classic_colours, face_points_and_normals, opengl_colour_parts,
-                                      opengl_colours)
-
-NATIVE, UNLIT, SHADER, NONE = "vtk-native", "vtk-unlit-colours", "vtk-shader-replacement", "none"
-REFERENCES = (NATIVE, UNLIT, SHADER)
+from compare.lit_reference.eye_space import EyeLight, face_points_and_normals
+from compare.lit_reference.lit_registry import lit_reference
+from compare.lit_reference.reference_kinds import NATIVE, NONE, REFERENCES, SHADER, UNLIT  # noqa: F401
+from compare.vtk_backend import numpy_to_vtk, vtk, vtk_to_numpy
 
 
 def object_reference(obj, forced: str | None = None) -> str:
-    """Which reference draws ``obj``: VTK's own shading, unlit colours, or a replaced shader."""
-    if forced == NATIVE or obj.material.reflection_model == "vtk":
-        return NATIVE
-    if obj.shading == "phong" and obj.mesh.point_normals is not None:
-        return SHADER
-    return UNLIT
+    """Which reference draws ``obj``: VTK's own shading, unlit colours, or a replaced shader
+    (by its model's :class:`~compare.lit_reference.reference_kinds.LitReference`, unless
+    ``forced`` is :data:`NATIVE`)."""
+    return NATIVE if forced == NATIVE else lit_reference(obj).reference(obj)
+
+
+def uses_separate_specular(obj, scene) -> bool:
+    """Whether ``obj``'s specular colour is added after the texture (its model and the scene say so)."""
+    return lit_reference(obj).separate_specular(scene)
 
 
 def scene_reference(scene, forced: str | None = None) -> str:
@@ -59,13 +65,14 @@ def eye_lights(renderer) -> list[EyeLight]:
         pos = view @ np.append(li.GetTransformedPosition(), 1.0)
         foc = view @ np.append(li.GetTransformedFocalPoint(), 1.0)
         direction = foc[:3] - pos[:3]
-        colour = np.asarray(li.GetDiffuseColor()) * li.GetIntensity()
+        intensity_rgb = np.asarray(li.GetDiffuseColor()) * li.GetIntensity()
         spot = li.GetPositional() and li.GetConeAngle() < 90.0
         out.append(EyeLight(position=pos[:3], direction=direction / np.linalg.norm(direction),
                             positional=bool(li.GetPositional()),
                             cos_cone=float(np.cos(np.radians(li.GetConeAngle()))) if spot else None,
                             exponent=li.GetExponent(), attenuation=np.asarray(li.GetAttenuationValues()),
-                            colour=colour, ambient=np.zeros(3), diffuse=colour, specular=colour))
+                            intensity_rgb=intensity_rgb, ambient=np.zeros(3), diffuse=intensity_rgb,
+                            specular=intensity_rgb))
     return out
 
 
@@ -81,7 +88,7 @@ def with_gl_colours(lights: list[EyeLight], scene) -> list[EyeLight]:
 
 def lit_colours(obj, actor, renderer, scene, lights) -> tuple[np.ndarray, str, np.ndarray | None]:
     """Lit 0..1 RGB for ``obj``: per point (gouraud with normals) or per cell; which; and
-    the separate specular colour (None unless the opengl model with ``separate_specular``)."""
+    the separate specular colour (None unless its model keeps one), by its model's ``lit``."""
     model_view = _matrix(renderer.GetActiveCamera().GetViewTransformMatrix()) @ _matrix(actor.GetMatrix())
     points = (np.c_[obj.mesh.points, np.ones(obj.mesh.n_points)] @ model_view.T)[:, :3]
     per_point = obj.shading == "gouraud" and obj.mesh.point_normals is not None
@@ -92,18 +99,7 @@ def lit_colours(obj, actor, renderer, scene, lights) -> tuple[np.ndarray, str, n
     else:
         points, normals = face_points_and_normals(points, obj.mesh.triangles)
         where = "cells"
-    m, r = obj.material, scene.render
-    secondary = None
-    if m.model == "opengl" and r.separate_specular:  # GL_SEPARATE_SPECULAR_COLOR: each part clamped on its own
-        rgb, secondary = (np.clip(part, 0.0, 1.0) for part in opengl_colour_parts(
-            points, normals, m.gl_ambient, m.gl_diffuse, m.gl_specular, m.shininess, lights,
-            global_ambient=np.asarray(r.global_ambient), local_viewer=r.local_viewer))
-    elif m.model == "opengl":
-        rgb = opengl_colours(points, normals, m.gl_ambient, m.gl_diffuse, m.gl_specular, m.shininess, lights,
-                             global_ambient=np.asarray(r.global_ambient), local_viewer=r.local_viewer)
-    else:
-        rgb = classic_colours(points, normals, np.asarray(m.color), m.ambient, m.diffuse, m.specular,
-                              m.specular_power, lights, ambient_light=np.asarray(r.ambient))
+    rgb, secondary = lit_reference(obj).lit(points, normals, obj, scene, lights)
     return rgb, where, secondary
 
 
@@ -111,18 +107,16 @@ def unshare_points(poly):
     """A copy of triangle-only ``poly`` in which every triangle has its own three points
     (same coordinates, same order, texture coordinates kept), so a per-triangle value can
     be a point value."""
-    import vtk
-    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-
+    vtk_ = vtk()
     points = vtk_to_numpy(poly.GetPoints().GetData())
     triangles = vtk_to_numpy(poly.GetPolys().GetConnectivityArray()).reshape(-1, 3)
-    out = vtk.vtkPolyData()
-    pts = vtk.vtkPoints()
+    out = vtk_.vtkPolyData()
+    pts = vtk_.vtkPoints()
     pts.SetData(numpy_to_vtk(np.ascontiguousarray(points[triangles.reshape(-1)]), deep=True))
     out.SetPoints(pts)
-    cells = vtk.vtkCellArray()
+    cells = vtk_.vtkCellArray()
     cells.SetData(3, numpy_to_vtk(np.arange(triangles.size, dtype=np.int64), deep=True,
-                                  array_type=vtk.VTK_ID_TYPE))
+                                  array_type=vtk_.VTK_ID_TYPE))
     out.SetPolys(cells)
     tcoords = poly.GetPointData().GetTCoords()
     if tcoords is not None:
@@ -146,9 +140,6 @@ def paint_unlit(actor, rgb: np.ndarray, where: str, secondary: np.ndarray | None
     point or cell like ``rgb``) goes in the same way and is added after VTK's texture
     modulation (``//VTK::TCoord::Impl``), clamped as OpenGL's colour sum is.
     """
-    import vtk
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-
     mapper = actor.GetMapper()
     poly = mapper.GetInput()
     if where == "cells" and (actor.GetProperty().GetOpacity() < 1.0 or actor.GetTexture() is not None
@@ -159,7 +150,7 @@ def paint_unlit(actor, rgb: np.ndarray, where: str, secondary: np.ndarray | None
         secondary = None if secondary is None else np.repeat(secondary, 3, axis=0)
     if where == "cells":
         colours = numpy_to_vtk(np.rint(np.clip(rgb, 0.0, 1.0) * 255.0).astype(np.uint8), deep=True,
-                               array_type=vtk.VTK_UNSIGNED_CHAR)
+                               array_type=vtk().VTK_UNSIGNED_CHAR)
         colours.SetName("lit")
         poly.GetCellData().SetScalars(colours)
         mapper.ScalarVisibilityOn()
@@ -184,15 +175,13 @@ def add_point_attributes(actor, attributes: dict[str, np.ndarray]) -> None:
     """Pass each float (N, 3) array per point to the fragment shader as ``<name>VSOut``
     (vertex attributes, interpolated perspective-correctly by VTK's rasteriser). One
     replacement per shader tag: VTK keeps one per tag, a second would replace the first."""
-    import vtk
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-
+    vtk_ = vtk()
     mapper = actor.GetMapper()
     for name, values in attributes.items():
-        array = numpy_to_vtk(np.ascontiguousarray(values, dtype=np.float32), deep=True, array_type=vtk.VTK_FLOAT)
+        array = numpy_to_vtk(np.ascontiguousarray(values, dtype=np.float32), deep=True, array_type=vtk_.VTK_FLOAT)
         array.SetName(name)
         mapper.GetInput().GetPointData().AddArray(array)
-        mapper.MapDataArrayToVertexAttribute(name, name, vtk.vtkDataObject.FIELD_ASSOCIATION_POINTS, -1)
+        mapper.MapDataArrayToVertexAttribute(name, name, vtk_.vtkDataObject.FIELD_ASSOCIATION_POINTS, -1)
     vs_dec = "".join(f"in vec3 {name};\nout vec3 {name}VSOut;\n" for name in attributes)
     vs_impl = "".join(f"{name}VSOut = {name};\n" for name in attributes)
     fs_dec = "".join(f"in vec3 {name}VSOut;\n" for name in attributes)
@@ -213,63 +202,23 @@ def add_secondary_colour(actor, glsl_value: str) -> None:
 
 
 # ------------------------------------------------------------- phong: a replaced shader
-def _vec3(v) -> str:
-    return "vec3(" + ", ".join(f"{float(x):.9g}" for x in v) + ")"
-
-
-def _glsl_light_vector(i: int, li: EyeLight) -> str:
-    """GLSL that sets ``L`` (toward the light) and ``att`` for light ``i``."""
-    if not li.positional:
-        return f"    L = -{_vec3(li.direction)}; att = 1.0;\n"
-    a0, a1, a2 = (float(x) for x in li.attenuation)
-    code = (f"    L = {_vec3(li.position)} - P; dist = length(L); L = L / dist;\n"
-            f"    att = 1.0 / ({a0:.9g} + {a1:.9g} * dist + {a2:.9g} * dist * dist);\n")
-    if li.cos_cone is not None:
-        code += (f"    cs = dot(-L, {_vec3(li.direction)});\n"
-                 f"    att = cs >= {li.cos_cone:.9g} ? att * pow(cs, {float(li.exponent):.9g}) : 0.0;\n")
-    return code
-
-
 def phong_shader(obj, scene, lights: list[EyeLight]) -> str:
-    """GLSL for VTK's ``//VTK::Light::Impl``: the object's textbook model per fragment.
+    """GLSL for VTK's ``//VTK::Light::Impl``: the object's model per fragment.
 
     Uses VTK's interpolated view-space normal and position (``normalVCVSOutput``,
     ``vertexVC``); VTK has already negated the normal on back faces for its two-sided
     lighting, which is undone here (the textbook models take normals as given). The
-    lights and the material are written into the code as constants. The opengl model
-    sums its specular term into ``secondary``, which joins ``c`` here (GL_SINGLE_COLOR)
-    or, with separate specular, after the texture (:func:`add_secondary_colour`).
+    model's ``glsl`` writes the lights and the material into the code as constants and
+    sets ``c``; a specular term summed into ``secondary`` joins ``c`` there or, with
+    separate specular, after the texture (:func:`add_secondary_colour`).
     """
-    m, r = obj.material, scene.render
     head = ("  vec3 n = normalize(normalVCVSOutput);\n"
             "  if (!gl_FrontFacing) { n = -n; }\n"
             "  vec3 P = vertexVC.xyz;\n"
             "  vec3 L; float att; float dist; float cs; float ndl;\n"
             "  vec3 secondary = vec3(0.0);\n")
-    if m.model == "opengl":
-        ma, md, ms = _vec3(m.gl_ambient), _vec3(m.gl_diffuse), _vec3(m.gl_specular)
-        viewer = "normalize(-P)" if r.local_viewer else "vec3(0.0, 0.0, 1.0)"
-        body = f"  vec3 V = {viewer};\n  vec3 c = {_vec3(r.global_ambient)} * {ma};\n"
-        for i, li in enumerate(lights):
-            body += ("  {\n" + _glsl_light_vector(i, li) +
-                     "    ndl = dot(n, L);\n    float sf = 0.0;\n"
-                     f"    if (ndl > 0.0) {{ sf = pow(max(dot(n, normalize(L + V)), 0.0), {m.shininess:.9g}); }}\n"
-                     f"    c += att * ({_vec3(li.ambient)} * {ma} + max(ndl, 0.0) * {_vec3(li.diffuse)} * {md});\n"
-                     f"    secondary += att * sf * {_vec3(li.specular)} * {ms};\n  }}\n")
-        if not r.separate_specular:
-            body += "  c += secondary;\n"
-    else:
-        o = np.asarray(m.color)
-        body = f"  vec3 V = normalize(-P);\n  vec3 c = {_vec3(m.ambient * o)} * {_vec3(r.ambient)};\n"
-        for i, li in enumerate(lights):
-            body += ("  {\n" + _glsl_light_vector(i, li) +
-                     "    ndl = dot(n, L);\n"
-                     "    if (att > 0.0 && ndl > 0.0) {\n"
-                     "      vec3 R = 2.0 * ndl * n - L;\n"
-                     f"      float sf = pow(max(dot(R, V), 0.0), {m.specular_power:.9g});\n"
-                     f"      c += att * {_vec3(li.colour)} * ({_vec3(m.diffuse * o)} * ndl + {m.specular:.9g} * sf);\n"
-                     "    }\n  }\n")
-    return head + body + f"  fragOutput0 = vec4(clamp(c, 0.0, 1.0), {m.opacity:.9g});\n"
+    body = lit_reference(obj).glsl(obj, scene, lights)
+    return head + body + f"  fragOutput0 = vec4(clamp(c, 0.0, 1.0), {obj.material.opacity:.9g});\n"
 
 
 def replace_light_shader(actor, code: str, separate_specular: bool = False) -> None:

@@ -1,7 +1,12 @@
-"""The one door to VTK: offscreen set-up, and the check that an OpenGL context exists.
+"""The rendering door to VTK: offscreen set-up, the check that an OpenGL context exists, and
+the VTK modules the reference uses.
 
-Nothing else in scanlab imports vtk or pyvista. ``VTK_DEFAULT_OPENGL_WINDOW`` must be set
-before VTK loads; EGL (Mesa's llvmpipe on a machine with no display) is the default.
+No other module of ``compare/`` imports vtk, vtkmodules or pyvista: they ask here
+(:func:`pyvista`, :func:`vtk`, :func:`numpy_to_vtk`, :func:`vtk_to_numpy`), and VTK loads on
+the first call, after the offscreen check, never on import (``tests/test_doors.py``
+checks). The ground floor has a door of its own for reading mesh files
+(``lab/meshfiles/vtk_readers.py``). ``VTK_DEFAULT_OPENGL_WINDOW`` must be set before VTK
+loads; EGL (Mesa's llvmpipe on a machine with no display) is the default.
 """
 from __future__ import annotations
 
@@ -55,3 +60,26 @@ def pyvista():
     import pyvista as pv
 
     return pv
+
+
+def vtk():
+    """Import and return the ``vtk`` module (every VTK class the reference uses) after the
+    offscreen check."""
+    check_offscreen_gl()
+    import vtk as vtk_module
+
+    return vtk_module
+
+
+def numpy_to_vtk(values, deep: bool = True, array_type=None):
+    """VTK's ``numpy_support.numpy_to_vtk``: a VTK data array holding ``values``."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk as convert
+
+    return convert(values, deep=deep, array_type=array_type)
+
+
+def vtk_to_numpy(array):
+    """VTK's ``numpy_support.vtk_to_numpy``: a numpy view of a VTK data array."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy as convert
+
+    return convert(array)

@@ -1,12 +1,12 @@
 """Loading scenes: TOML scene files and built-in shape names → :class:`lab.scene.Scene`.
 
-All validation happens here, at the edge; a problem raises :class:`SceneError` whose
-one-line message names the file and the key. Colours are quantised to k/255 on loading
+All validation happens here, at the edge, every value read through
+:class:`lab.validation.Table` (as the CSG parser reads its tree); a problem raises
+:class:`SceneError` whose one-line message names the file and the key. Colours are quantised to k/255 on loading
 (VTK's ``vtkColor`` keeps no more), so both renderers start from the same numbers.
 """
 from __future__ import annotations
 
-import difflib
 import errno
 import inspect
 import math
@@ -24,87 +24,13 @@ from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHA
                        Light, Material, RenderSettings, Scene, SceneObject, headlight)
 from lab.values import MAX_MAGNITUDE, file_problem, real, show
 from lab.matrices import model_matrix
+from lab.validation import SceneError, Table, quantise_colour
 
 MAX_SIZE = 8192
 """Largest image width and height without ``--allow-large`` (pixels)."""
 LARGE_SIZE = 65536
 """Largest image width and height with ``--allow-large`` (pixels)."""
 CSG_SEGMENTS = 128
-
-
-class SceneError(ValueError):
-    """A scene file, shape name or option that cannot be used; the message says why."""
-
-
-# --------------------------------------------------------------------------- values
-class _Section:
-    """Reads typed values from one TOML table, naming ``file: table.key`` in errors.
-
-    Every number must be finite and within ±MAX_MAGNITUDE, besides its own range.
-    """
-
-    def __init__(self, source: str, where: str, table: dict, allowed: set[str]):
-        self.source, self.where, self.table = source, where, table
-        for key in table:
-            if key not in allowed:
-                near = difflib.get_close_matches(key, sorted(allowed), n=1)
-                hint = f" (did you mean '{near[0]}'?)" if near else f" (valid: {', '.join(sorted(allowed))})"
-                raise self.error(key if key.isidentifier() else show(key, 40), f"unknown key{hint}")
-
-    def error(self, key: str, message: str) -> SceneError:
-        where = f"{self.where}.{key}" if self.where else key
-        return SceneError(f"{self.source}: {where}: {message}")
-
-    def number(self, key, default, lo=-math.inf, hi=math.inf, lo_open=False, hi_open=False):
-        raw = self.table.get(key, default)
-        v = real(raw)
-        if v is None:
-            raise self.error(key, f"expected a number, got {show(raw)}")
-        if not math.isfinite(v):
-            raise self.error(key, f"must be finite, got {show(raw)}")
-        lo, hi = max(lo, -MAX_MAGNITUDE), min(hi, MAX_MAGNITUDE)
-        if v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi):
-            lb = "(" if lo_open else "["
-            hb = ")" if hi_open else "]"
-            raise self.error(key, f"{v:g} is outside {lb}{lo:g}, {hi:g}{hb}")
-        return v
-
-    def vector(self, key, default, n=3, lo=-math.inf, hi=math.inf):
-        v = self.table.get(key, default)
-        if v is None:
-            return None
-        if not isinstance(v, (list, tuple)) or len(v) != n:
-            raise self.error(key, f"expected a list of {n} numbers, got {show(v)}")
-        lo, hi = max(lo, -MAX_MAGNITUDE), min(hi, MAX_MAGNITUDE)
-        out = []
-        for x in map(real, v):
-            if x is None or not math.isfinite(x):
-                raise self.error(key, f"expected {n} finite numbers, got {show(v)}")
-            if x < lo or x > hi:
-                raise self.error(key, f"values must lie in [{lo:g}, {hi:g}], got {show(v)}")
-            out.append(x)
-        return tuple(out)
-
-    def colour(self, key, default):
-        c = self.vector(key, default, 3, 0.0, 1.0)
-        return None if c is None else quantise_colour(c)
-
-    def flag(self, key, default):
-        v = self.table.get(key, default)
-        if not isinstance(v, bool):
-            raise self.error(key, f"expected true or false, got {show(v)}")
-        return v
-
-    def choice(self, key, default, choices):
-        v = self.table.get(key, default)
-        if not isinstance(v, str) or v not in choices:
-            raise self.error(key, f"{show(v)} is not one of {', '.join(choices)}")
-        return v
-
-
-def quantise_colour(c) -> tuple[float, float, float]:
-    """Round a linear 0..1 RGB colour to k/255, as ``vtkColor``/``pv.Color`` store it."""
-    return tuple(round(float(x) * 255.0) / 255.0 for x in c)
 
 
 def size_problem(size, allow_large: bool = False) -> str | None:
@@ -124,7 +50,7 @@ def size_problem(size, allow_large: bool = False) -> str | None:
 
 # --------------------------------------------------------------------------- sections
 def _image(src, table, allow_large=False) -> Image:
-    s = _Section(src, "image", table, {"size", "background"})
+    s = Table(src, "image", table, {"size", "background"})
     size = s.vector("size", (512, 384), 2)
     problem = size_problem(size, allow_large)
     if problem:
@@ -133,8 +59,8 @@ def _image(src, table, allow_large=False) -> Image:
 
 
 def _camera(src, table) -> Camera:
-    s = _Section(src, "camera", table, {"position", "focal_point", "view_up", "view_angle",
-                                       "clipping_range", "parallel", "parallel_scale"})
+    s = Table(src, "camera", table, {"position", "focal_point", "view_up", "view_angle",
+                                     "clipping_range", "parallel", "parallel_scale"})
     pos = s.vector("position", (0.0, 0.0, 1.0))
     foc = s.vector("focal_point", (0.0, 0.0, 0.0))
     up = s.vector("view_up", (0.0, 1.0, 0.0))
@@ -153,9 +79,9 @@ def _camera(src, table) -> Camera:
 
 
 def _light(src, i, table) -> Light:
-    s = _Section(src, f"light[{i}]", table, {"kind", "position", "focal_point", "color", "intensity", "positional",
-                                             "cone_angle", "exponent", "attenuation", "on", "ambient_color",
-                                             "diffuse_color", "specular_color"})
+    s = Table(src, f"light[{i}]", table, {"kind", "position", "focal_point", "color", "intensity", "positional",
+                                           "cone_angle", "exponent", "attenuation", "on", "ambient_color",
+                                           "diffuse_color", "specular_color"})
     kind = s.choice("kind", "scene", LIGHT_KINDS)
     att = s.vector("attenuation", (1.0, 0.0, 0.0), 3, 0.0)
     if sum(att) <= 0:
@@ -171,7 +97,7 @@ def _light(src, i, table) -> Light:
                  attenuation=att, on=s.flag("on", True))
 
 
-def _light_position(s: _Section, table: dict):
+def _light_position(s: Table, table: dict):
     """(position, focal_point, positional) from 3 values, or OpenGL's 4 = [x, y, z, w]."""
     raw = table.get("position", (0.0, 0.0, 1.0))
     if isinstance(raw, list) and len(raw) == 4:
@@ -196,7 +122,7 @@ OBJECT_KEYS = {"mesh", "shape", "params", "color", "ambient", "diffuse", "specul
 
 def _object(src, base: Path | None, i, table, inputs: list) -> SceneObject:
     """One ``[[object]]``; the files it reads (mesh, texture) are appended to ``inputs``."""
-    s = _Section(src, f"object[{i}]", table, OBJECT_KEYS)
+    s = Table(src, f"object[{i}]", table, OBJECT_KEYS)
     sources = [k for k in ("mesh", "shape", "csg") if k in table]
     if len(sources) != 1:
         raise s.error("mesh", "give exactly one of 'mesh' (a file), 'shape' (a built-in shape) or 'csg' (a tree)")
@@ -228,7 +154,7 @@ def _object(src, base: Path | None, i, table, inputs: list) -> SceneObject:
                        model_to_world=m, name=str(table.get("name", name)), texture=texture)
 
 
-def _texture(s: _Section, base: Path | None, mesh: Mesh, table: dict, inputs: list):
+def _texture(s: Table, base: Path | None, mesh: Mesh, table: dict, inputs: list):
     """The object's texture image and sampling rules, or None."""
     from lab.texture import FILTERS, WRAPS, load_texture
 
@@ -250,7 +176,7 @@ def _texture(s: _Section, base: Path | None, mesh: Mesh, table: dict, inputs: li
         raise s.error("texture", str(exc)) from None
 
 
-def _csg(s: _Section, tree) -> Mesh:
+def _csg(s: Table, tree) -> Mesh:
     """Mesh a CSG tree (``[object.csg]``) once, here, with manifold3d (see :mod:`lab.csg`).
 
     Quadrics get CSG_SEGMENTS segments per circle: a CSG result is often a small
@@ -261,13 +187,14 @@ def _csg(s: _Section, tree) -> Mesh:
 
     if not isinstance(tree, dict):
         raise s.error("csg", f"expected a table such as {{ op = \"union\", children = [...] }}, got {show(tree)}")
+    node = csg.from_dict(tree, where=f"{s.where}.csg", source=s.source)  # errors name the path in the tree
     try:
-        return csg.to_mesh(csg.from_dict(tree, where="csg"), segments=CSG_SEGMENTS)
-    except ValueError as exc:  # its message starts with the path in the tree, "csg.children[0]…: …"
-        raise SceneError(f"{s.source}: {s.where}.{exc}") from None
+        return csg.to_mesh(node, segments=CSG_SEGMENTS)
+    except ValueError as exc:  # a primitive that encloses no finite region
+        raise s.error("csg", str(exc)) from None
 
 
-def _normals(s: _Section, mesh: Mesh, table: dict) -> Mesh:
+def _normals(s: Table, mesh: Mesh, table: dict) -> Mesh:
     """Apply the object's ``normals`` choice once, here, so both renderers get the result."""
     from lab.normals import NORMAL_MODES, with_normals
 
@@ -279,9 +206,9 @@ def _normals(s: _Section, mesh: Mesh, table: dict) -> Mesh:
 
 
 def _render(src, table) -> RenderSettings:
-    s = _Section(src, "render", table, {"interpolation", "global_ambient", "local_viewer", "ambient",
-                                        "hidden_surface", "cull_backfaces", "transparency",
-                                        "separate_specular"})
+    s = Table(src, "render", table, {"interpolation", "global_ambient", "local_viewer", "ambient",
+                                     "hidden_surface", "cull_backfaces", "transparency",
+                                     "separate_specular"})
     return RenderSettings(interpolation=s.choice("interpolation", "perspective", INTERPOLATIONS),
                           hidden_surface=s.choice("hidden_surface", "zbuffer", HIDDEN_SURFACES),
                           cull_backfaces=s.flag("cull_backfaces", False),
@@ -307,7 +234,7 @@ def resolve_path(base: Path | None, value: str) -> Path:
     return Path(value) if base is None else base / value
 
 
-def _mesh_file(s: _Section, base: Path | None, value, inputs: list) -> Mesh:
+def _mesh_file(s: Table, base: Path | None, value, inputs: list) -> Mesh:
     from lab.meshfiles import MeshFileError, read_mesh
 
     if not isinstance(value, str):
@@ -445,7 +372,7 @@ def scene_from_dict(data: dict, source: str = "<scene>", base: Path | None = Non
     ``allow_large`` lifts the image size limit of MAX_SIZE × MAX_SIZE pixels (up to
     LARGE_SIZE on each side).
     """
-    _Section(source, "", data, {"image", "camera", "light", "object", "render"})
+    Table(source, "", data, {"image", "camera", "light", "object", "render"})
 
     def table(key, want):
         v = data.get(key, want())

@@ -90,17 +90,18 @@ class Light:
     specular_color: Vec3 | None = None
 
     @property
-    def colour(self) -> np.ndarray:
-        """colour × intensity, linear RGB (what VTK and the classic model use)."""
+    def intensity_rgb(self) -> np.ndarray:
+        """``color`` × ``intensity``, linear RGB: the light's intensity per channel (what VTK
+        and the classic model use; ``color`` alone is the scene file's colour)."""
         return np.asarray(self.color) * self.intensity
 
     @property
     def gl_diffuse(self) -> np.ndarray:
-        return self.colour if self.diffuse_color is None else np.asarray(self.diffuse_color)
+        return self.intensity_rgb if self.diffuse_color is None else np.asarray(self.diffuse_color)
 
     @property
     def gl_specular(self) -> np.ndarray:
-        return self.colour if self.specular_color is None else np.asarray(self.specular_color)
+        return self.intensity_rgb if self.specular_color is None else np.asarray(self.specular_color)
 
 
 @dataclass(frozen=True)
@@ -111,7 +112,7 @@ class Material:
     ``lighting`` False draws ``ambient·color + diffuse·color`` unlit, whatever the
     ``model`` (see :attr:`reflection_model`).
 
-    ``model`` chooses the reflection model (see ``renderer/lighting``): "vtk" (VTK's
+    ``model`` chooses the reflection model (see ``renderer/reflection``): "vtk" (VTK's
     own), "opengl" (fixed-function OpenGL: material ``ambient_color`` and
     ``diffuse_color``, default ``color``; ``specular_color``, default black;
     ``shininess`` 0..128, Blinn's half vector) or "classic" (the course's

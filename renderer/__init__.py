@@ -4,8 +4,9 @@ This package never imports vtk or pyvista: it is what the VTK reference checks. 
 imports only the ground floor (``lab``'s scene model), numpy and numba.
 Entry point: :func:`render`. Stages, in order: :mod:`~renderer.transform`,
 :mod:`~renderer.camera`, :mod:`~renderer.clip`, :mod:`~renderer.window`,
-:mod:`~renderer.raster`, :mod:`~renderer.shading` (with :mod:`~renderer.lighting`),
-assembled in :mod:`~renderer.pipeline`.
+:mod:`~renderer.raster`, :mod:`~renderer.lit_colours` and :mod:`~renderer.shading` (with the
+reflection models of :mod:`~renderer.reflection` and the lights of :mod:`~renderer.lights`),
+:mod:`~renderer.translucency`, assembled in :mod:`~renderer.pipeline`.
 
 Importing the package loads nothing: ``render`` and ``RenderOptions`` come from
 :mod:`renderer.pipeline` on first use, so ``import renderer.camera`` does not compile

@@ -2,8 +2,8 @@
 that can never serve code older than the sources.
 
 numba's own on-disk cache (``cache=True``) checks only the file a kernel is written in.
-A kernel that calls or inlines a function from another file (``shade`` in
-``shading.py`` inlines ``vtk_lighting`` from ``lighting.py``) keeps its old machine code
+A kernel that calls or inlines a function from another file (``shade_rows`` in
+``shading.py`` inlines ``vtk_lighting`` from ``reflection/vtk_model.py``) keeps its old machine code
 when only the callee's file changes. Here every cached kernel of the renderer is filed
 under one folder named by a hash of *all* the renderer's sources (every ``*.py`` in this
 package, by content, not by time stamp):

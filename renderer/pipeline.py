@@ -3,8 +3,8 @@
 1. model → world (:mod:`renderer.transform`), 2. world → view and 3. view → clip
 (:mod:`renderer.camera`), 4. clipping (:mod:`renderer.clip`), 5. window mapping and
 sub-pixel snapping (:mod:`renderer.window`), 6. scanline fill with the top-left rule and
-the z-buffer (:mod:`renderer.raster`), 7. shading (:mod:`renderer.shading`,
-:mod:`renderer.lighting`), 8. 8-bit output with the flip to image rows. Objects with
+the z-buffer (:mod:`renderer.raster`), 7. shading (:mod:`renderer.lit_colours`, :mod:`renderer.shading`, the
+reflection models of :mod:`renderer.reflection`), 8. 8-bit output with the flip to image rows. Objects with
 opacity < 1 skip the z-buffer: after the opaque frame is shaded they are composited over
 it from per-pixel fragment lists (:mod:`renderer.translucency`).
 """
@@ -18,17 +18,17 @@ import numpy as np
 from lab.frame import Frame
 from renderer.camera import clipping_range, view_to_clip, world_to_view
 from renderer.clip import clip_triangles
-from renderer.lighting import UNLIT, view_lights
+from renderer.lights import view_lights
+from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
 from renderer.raster import rasterize_triangles
-from renderer.shading import (FACE_COLOUR, TEXTBOOK_PIXEL, VERTEX_COLOUR, VTK_FLAT, VTK_SMOOTH, Fragments,
-                               ObjectTable, face_normals, shade, to_8bit)
-from renderer.textbook_lighting import CLASSIC, OPENGL, light_faces, light_vertices
-from renderer.texture import CLAMP, LINEAR, NEAREST, REPEAT
+from renderer.reflection.registry import material_table
+from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
+from renderer.texture_sampling import texture_table
 from renderer.translucency import draw_translucent
 from renderer.transform import normal_matrix, transform_points
 from renderer.window import clip_to_window, window_rows_to_image_rows
-from renderer.workspace import empty, thread_workspace
+from renderer.workspace import thread_workspace
 
 
 @dataclass(frozen=True)
@@ -53,7 +53,9 @@ class SceneGeometry(NamedTuple):
     none); triangles (T, 3) indices into those rows; tri_object (T,) each triangle's
     object; vert_object (N,) each vertex's object; tcoords (N, 2) texture coordinates
     (zeros when the object has none); face_normals (T, 3) each triangle's unit view-space
-    plane normal, (v1 − v0) × (v2 − v0) normalised (zero when it has no area).
+    plane normal, (v1 − v0) × (v2 − v0) normalised (zero when it has no area); parallel:
+    the camera projects in parallel (the viewer is at infinity along +z, which decides
+    which side of a triangle faces it).
     """
 
     verts_view: np.ndarray
@@ -64,6 +66,36 @@ class SceneGeometry(NamedTuple):
     vert_object: np.ndarray
     tcoords: np.ndarray
     face_normals: np.ndarray
+    parallel: bool
+
+
+class ClippedTriangles(NamedTuple):
+    """The triangles after clipping (stage 4) and window mapping (stage 5), in draw order.
+
+    tri_clip (K, 3, 4) clip-space vertices; clip_bary (K, 3, 3) their weights in the source
+    triangle; clip_source (K,) the source triangle; tri_window (K, 3, 3) window space (x, y
+    up, z in 0..1); tri_fixed (K, 3, 2) x and y on the 1/256-pixel grid.
+    """
+
+    tri_clip: np.ndarray
+    clip_bary: np.ndarray
+    clip_source: np.ndarray
+    tri_window: np.ndarray
+    tri_fixed: np.ndarray
+
+    def take(self, index) -> "ClippedTriangles":
+        """The triangles picked by ``index`` (a mask, an order or a slice), in that order."""
+        return ClippedTriangles(*(a[index] for a in self))
+
+
+class RasterRules(NamedTuple):
+    """How fragments are made: ``fill_rule`` ("top-left" or "bottom-right"), ``depth_test``
+    (the z-buffer, else the last fragment drawn wins) and ``cull_back`` (drop clockwise
+    triangles)."""
+
+    fill_rule: str = "top-left"
+    depth_test: bool = True
+    cull_back: bool = False
 
 
 def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray) -> SceneGeometry:
@@ -88,103 +120,8 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
     normals_face = np.empty((len(triangles), 3))
     face_normals(verts_view, triangles, normals_face)
     return SceneGeometry(verts_view, np.concatenate(clips), np.concatenate(normals), triangles,
-                         np.concatenate(owners), np.concatenate(vert_owners), np.concatenate(tcoords), normals_face)
-
-
-MODEL_CODES = {"vtk": 0, "opengl": OPENGL, "classic": CLASSIC}
-
-VTK_MAX_SPECULAR_POWER = 128.0
-"""``vtkProperty::SetSpecularPower`` clamps to [0, 128]: a larger power in the vtk model
-draws as 128 (measured: 1000 is read back as 128.0). The classic model keeps any power."""
-
-
-def object_kind(obj) -> int:
-    """How the shading kernel treats an object: by model, shading and whether it has normals."""
-    smooth = obj.shading != "flat" and obj.mesh.point_normals is not None
-    if obj.material.reflection_model == "vtk":
-        return VTK_SMOOTH if smooth else VTK_FLAT
-    if not smooth:
-        return FACE_COLOUR
-    return VERTEX_COLOUR if obj.shading == "gouraud" else TEXTBOOK_PIXEL
-
-
-def object_table(scene, complexity: int) -> ObjectTable:
-    """Per-object shading data for the kernels.
-
-    amb, dif, spe, power by model — vtk: Ka·C, Kd·C, Ks·Cs, specular power (at most
-    :data:`VTK_MAX_SPECULAR_POWER`, as VTK clamps it); opengl: the material's ambient,
-    diffuse and specular colours and its shininess; classic: Ka·O, Kd·O, Ks·(1, 1, 1), n.
-    """
-    kind, model, comp, amb, dif, spe, power = [], [], [], [], [], [], []
-    for obj in scene.objects:
-        m = obj.material
-        kind.append(object_kind(obj))
-        model.append(MODEL_CODES[m.reflection_model])
-        comp.append(complexity if m.lighting else UNLIT)
-        colour = np.asarray(m.color)
-        if m.reflection_model == "opengl":
-            amb.append(m.gl_ambient), dif.append(m.gl_diffuse), spe.append(m.gl_specular)
-            power.append(m.shininess)
-        elif m.reflection_model == "classic":
-            amb.append(m.ambient * colour), dif.append(m.diffuse * colour), spe.append(np.full(3, m.specular))
-            power.append(m.specular_power)
-        else:
-            amb.append(m.ambient * colour), dif.append(m.diffuse * colour)
-            spe.append(m.specular * np.asarray(m.effective_specular_color))
-            power.append(min(m.specular_power, VTK_MAX_SPECULAR_POWER))
-    r = scene.render
-    tex = texture_table(scene)
-    return ObjectTable(np.array(kind, np.int64), np.array(model, np.int64), np.array(comp, np.int64),
-                       np.array(amb, np.float64), np.array(dif, np.float64), np.array(spe, np.float64),
-                       np.array(power, np.float64), np.asarray(r.global_ambient, np.float64),
-                       np.asarray(r.ambient, np.float64), bool(r.local_viewer), bool(r.separate_specular), *tex)
-
-
-def texture_table(scene):
-    """All objects' textures in one flat (Σ H·W, 3) uint8 array (their ``texels_8bit``), and
-    per object: textured flag, offset, width, height, filter and wrap codes (see
-    :mod:`renderer.texture`).
-
-    Only textured objects take rows (the kernels sample nothing for the others). With one
-    textured object the flat array is a view of its texels, not a copy: a 2048×1024 texture
-    copied every frame cost more than shading the frame."""
-    textured, offset, width, height, filt, wrap, chunks = [], [], [], [], [], [], []
-    start = 0
-    for obj in scene.objects:
-        t = obj.texture
-        textured.append(t is not None)
-        h, w = (t.texels.shape[:2]) if t is not None else (1, 1)
-        offset.append(start if t is not None else 0)
-        width.append(w)
-        height.append(h)
-        filt.append(LINEAR if t is not None and t.filter == "linear" else NEAREST)
-        wrap.append(CLAMP if t is not None and t.wrap == "clamp" else REPEAT)
-        if t is not None:
-            chunks.append(t.texels_8bit.reshape(-1, 3))
-            start += h * w
-    if not chunks:
-        texels = np.full((1, 3), 255, np.uint8)
-    else:
-        texels = chunks[0] if len(chunks) == 1 else np.concatenate(chunks)
-    as_int = lambda v: np.array(v, np.int64)  # noqa: E731
-    return (np.array(textured, np.bool_), as_int(offset), as_int(width), as_int(height), as_int(filt), as_int(wrap),
-            texels)
-
-
-def textbook_colours(geo: SceneGeometry, objs: ObjectTable, lights, ws=None):
-    """Lit colours per vertex (Gouraud) and per triangle (flat) for the textbook models:
-    (N, 6) and (T, 6), primary RGB then secondary (separate specular) RGB."""
-    vert_colour = empty(ws, "shade.vert_colour", (len(geo.verts_view), 6))
-    face_colour = empty(ws, "shade.face_colour", (len(geo.triangles), 6))
-    if (objs.kind == VERTEX_COLOUR).any():
-        light_vertices(geo.verts_view, geo.normals_view, geo.vert_object, objs.model, objs.amb, objs.dif, objs.spe,
-                       objs.power, objs.global_ambient, objs.local_viewer, objs.separate_specular,
-                       objs.ambient_light, lights, vert_colour)
-    if (objs.kind == FACE_COLOUR).any():
-        light_faces(geo.verts_view, geo.triangles, geo.face_normals, geo.tri_object, objs.model, objs.amb, objs.dif,
-                    objs.spe, objs.power, objs.global_ambient, objs.local_viewer, objs.separate_specular,
-                    objs.ambient_light, lights, face_colour)
-    return vert_colour, face_colour
+                         np.concatenate(owners), np.concatenate(vert_owners), np.concatenate(tcoords), normals_face,
+                         bool(scene.camera.parallel))
 
 
 def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
@@ -208,34 +145,28 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
 
     ws = thread_workspace()
     tri_clip, clip_bary, clip_source = clip_triangles(geo.verts_clip, geo.triangles, ws)
-    tri_window, tri_fixed = clip_to_window(tri_clip, width, height, ws)
+    clipped = ClippedTriangles(tri_clip, clip_bary, clip_source, *clip_to_window(tri_clip, width, height, ws))
     hidden = scene.render.hidden_surface
     if hidden == "painter":  # back to front; the fragments then simply overwrite
-        order = painter_order(tri_window)
-        tri_clip, clip_bary, clip_source = tri_clip[order], clip_bary[order], clip_source[order]
-        tri_window, tri_fixed = tri_window[order], tri_fixed[order]
+        clipped = clipped.take(painter_order(clipped.tri_window))
+    rules = RasterRules(options.fill_rule, depth_test=hidden == "zbuffer", cull_back=scene.render.cull_backfaces)
     # opaque objects through the z-buffer; translucent ones (opacity < 1) afterwards, as fragment lists
-    opacity = np.array([obj.material.opacity for obj in scene.objects], np.float64)
-    translucent = opacity[geo.tri_object[clip_source]] < 1.0
-    opaque = ~translucent if translucent.any() else slice(None)
-    depth, tri_index, bary, front = rasterize_triangles(tri_fixed[opaque], tri_window[opaque], width, height,
-                                                        options.fill_rule, ws=ws, depth_test=hidden == "zbuffer",
-                                                        cull_back=scene.render.cull_backfaces)
+    materials = material_table(scene)
+    translucent = materials.opacity[geo.tri_object[clipped.clip_source]] < 1.0
+    opaque = clipped.take(~translucent) if translucent.any() else clipped
+    depth, tri_index, bary, front = rasterize_triangles(opaque.tri_fixed, opaque.tri_window, width, height,
+                                                        rules.fill_rule, ws=ws, depth_test=rules.depth_test,
+                                                        cull_back=rules.cull_back)
 
-    lights = view_lights(scene.lights, cam, w2v)
-    objs = object_table(scene, lights.complexity)
-    vert_colour, face_colour = textbook_colours(geo, objs, lights, ws)
-    interpolation = options.interpolation or scene.render.interpolation
+    lights = view_lights(scene.lights, cam, w2v, scene.render)
+    inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
+    perspective = (options.interpolation or scene.render.interpolation) == "perspective"
     rgb = np.empty((height, width, 3), np.uint8)
-    shade(Fragments(tri_index, bary, front, tri_clip[opaque], clip_bary[opaque], clip_source[opaque]), geo, objs,
-          lights, vert_colour, face_colour, bool(cam.parallel), interpolation == "perspective",
-          to_8bit(np.asarray(scene.image.background)), rgb)
+    shade(Fragments(tri_index, bary, front, opaque.tri_clip, opaque.clip_bary, opaque.clip_source, perspective), geo,
+          inputs, to_8bit(np.asarray(scene.image.background)), rgb)
     coverage = tri_index >= 0
     if translucent.any():
-        coverage = coverage | draw_translucent(
-            tri_fixed[translucent], tri_window[translucent], tri_clip[translucent], clip_bary[translucent],
-            clip_source[translucent], depth, rgb, geo, objs, lights, vert_colour, face_colour, opacity,
-            scene.render.transparency, bool(cam.parallel), interpolation == "perspective", options.fill_rule,
-            depth_test=hidden == "zbuffer", cull_back=scene.render.cull_backfaces, ws=ws)
+        coverage = coverage | draw_translucent(clipped.take(translucent), depth, rgb, geo, inputs,
+                                               scene.render.transparency, perspective, rules, ws)
     return Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth.copy()),
                  coverage=window_rows_to_image_rows(coverage))

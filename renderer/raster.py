@@ -24,15 +24,17 @@ Rules, each in one place:
 
 Determinism: every pixel sees the triangles in the order given (objects in scene order,
 triangles in mesh order), as OpenGL guarantees, so ties resolve the same way every run.
-Parallelism deals the image's rows out to bands, never splits the triangle order (see
-:func:`rasterize`), and gives the same bytes as one thread.
+Parallelism deals the image's rows out to bands (:mod:`renderer.bands`), never splits the
+triangle order (see :func:`rasterize`), and gives the same bytes as one thread.
 """
 from __future__ import annotations
 
-import numba
+from typing import NamedTuple
+
 import numpy as np
 from renderer.jit import njit, prange
 
+from renderer.bands import first_row_of_band, raster_bands
 from renderer.window import SUBPIXEL
 from renderer.workspace import empty
 
@@ -41,6 +43,26 @@ FILL_RULES = {"top-left": TOP_LEFT, "bottom-right": BOTTOM_RIGHT}
 
 DEPTH_BITS = 24
 DEPTH_MAX = float((1 << DEPTH_BITS) - 1)
+
+EMPTY = -1
+"""``tri_index`` of a pixel no triangle covers."""
+
+
+class TriangleSetup(NamedTuple):
+    """Per-triangle set-up, done once (:func:`setup_triangles`).
+
+    front (K,) bool, counter-clockwise on screen; ccw (K, 3, 2) the fixed-point vertices
+    ordered counter-clockwise (for the span test); rows (K, 2) first and last window row of
+    pixel centres it may cover (none when first > last); plane (K, 11): x0, y0, e1x, e1y,
+    e2x, e2y — vertex 0 and the edges to vertices 1 and 2 in float window coordinates, in
+    the triangle's own vertex order (for the weights) — then the depth plane ax, ay, az,
+    zx, zy (:func:`depth_plane`).
+    """
+
+    front: np.ndarray
+    ccw: np.ndarray
+    rows: np.ndarray
+    plane: np.ndarray
 
 
 @njit(cache=True, inline="always")
@@ -114,16 +136,9 @@ def depth_plane(t, out):
 
 @njit(cache=True, parallel=True)
 def setup_triangles(tri_fixed, tri_window, height, cull_back, front, ccw, rows, plane):
-    """Per-triangle set-up, once: facing, counter-clockwise fixed vertices, rows, planes.
-
-    Writes ``front`` (K,) bool; ``ccw`` (K, 3, 2) fixed vertices ordered
-    counter-clockwise (for the span test); ``rows`` (K, 2) first and last window row of
-    pixel centres it may cover (empty when first > last: zero area or off-screen);
-    ``plane`` (K, 11): x0, y0, e1x, e1y, e2x, e2y — vertex 0 and the edges to vertices 1
-    and 2 in float window coordinates, in the triangle's own vertex order (for the
-    weights) — then the depth plane ax, ay, az, zx, zy (:func:`depth_plane`).
-    With ``cull_back`` a back-facing (clockwise) triangle gets no rows: back-face culling.
-    """
+    """Per-triangle set-up, once: facing, counter-clockwise fixed vertices, rows, planes, into
+    ``front``, ``ccw``, ``rows`` and ``plane`` (see :class:`TriangleSetup`). With
+    ``cull_back`` a back-facing (clockwise) triangle gets no rows: back-face culling."""
     for k in prange(tri_fixed.shape[0]):
         area = signed_area_fixed(tri_fixed[k])
         front[k] = area > 0
@@ -167,11 +182,11 @@ def pixel_fragment(k, row, col, plane):
 
 
 @njit(cache=True, inline="always")
-def fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary):
+def fill_row(k, row, setup, rule, depth_test, depth, tri_index, bary):
     """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes."""
-    first, last = row_span(k, row, ccw, width, rule)
+    first, last = row_span(k, row, setup.ccw, depth.shape[1], rule)
     for col in range(first, last + 1):
-        l1, l2, z = pixel_fragment(k, row, col, plane)
+        l1, l2, z = pixel_fragment(k, row, col, setup.plane)
         if z <= depth[row, col] or not depth_test:
             depth[row, col] = z
             tri_index[row, col] = k
@@ -179,47 +194,42 @@ def fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary
             bary[row, col, 1] = l2
 
 
-@njit(cache=True, inline="always")
-def first_row_of_band(lo, b, n_bands):
-    """The first row ≥ ``lo`` that band ``b`` owns: bands take rows like cards, row r to band r mod n_bands."""
-    return lo + (b - lo) % n_bands
-
-
 @njit(cache=True, parallel=True)
-def rasterize(ccw, rows, plane, width, height, n_bands, rule, depth_test, depth, tri_index, bary):
-    """Scan-convert every triangle into the visibility buffer (the loop kernel).
+def rasterize(setup, n_bands, rule, depth_test, depth, tri_index, bary):
+    """Scan-convert every triangle of ``setup`` into the visibility buffer (the loop kernel).
 
-    The image's rows are dealt out to ``n_bands`` bands like cards (row r to band
-    r mod n_bands, so every band gets rows from all over the image and the threads share
-    the work evenly), filled in parallel; each band clears its rows and then draws *every*
-    triangle in order, on its own rows only. A pixel belongs to one band and sees the
-    triangles in draw order, so the result is the same, bit for bit, as a serial loop
-    (z-buffer ties included). ``depth_test`` False draws every fragment over what is there
-    (the painter's algorithm, or no hidden-surface removal at all): then the last triangle
-    drawn wins.
-    depth (H, W) float, tri_index (H, W) int64 (−1 = empty), bary (H, W, 2): outputs, in
-    window rows (y up); bary holds the screen-space weights of vertices 1 and 2.
+    The image's rows are dealt out to ``n_bands`` bands (:mod:`renderer.bands`), filled in
+    parallel; each band clears its rows and then draws *every* triangle in order, on its
+    own rows only. A pixel belongs to one band and sees the triangles in draw order, so the
+    result is the same, bit for bit, as a serial loop (z-buffer ties included).
+    ``depth_test`` False draws every fragment over what is there (the painter's algorithm,
+    or no hidden-surface removal at all): then the last triangle drawn wins.
+    depth (H, W) float, tri_index (H, W) int64 (:data:`EMPTY` where none), bary (H, W, 2):
+    outputs, in window rows (y up); bary holds the screen-space weights of vertices 1 and 2.
+    The outputs are plain arrays: numba loses writes made through a NamedTuple's fields
+    inside ``prange`` (numba issues #5872, #7135); ``setup`` is only read.
     """
+    height, width = depth.shape
     for b in prange(n_bands):
         for row in range(b, height, n_bands):
             for col in range(width):
                 depth[row, col] = 1.0
-                tri_index[row, col] = -1
-        for k in range(ccw.shape[0]):
-            for row in range(first_row_of_band(rows[k, 0], b, n_bands), rows[k, 1] + 1, n_bands):
-                fill_row(k, row, ccw, plane, width, rule, depth_test, depth, tri_index, bary)
+                tri_index[row, col] = EMPTY
+        for k in range(setup.ccw.shape[0]):
+            for row in range(first_row_of_band(setup.rows[k, 0], b, n_bands), setup.rows[k, 1] + 1, n_bands):
+                fill_row(k, row, setup, rule, depth_test, depth, tri_index, bary)
 
 
-def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back: bool, ws=None, name="raster"):
-    """Allocate (in workspace ``ws`` under ``name``) and run :func:`setup_triangles`:
-    returns ``front``, ``ccw``, ``rows``, ``plane``."""
+def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back: bool, ws=None,
+           name="raster") -> TriangleSetup:
+    """Allocate (in workspace ``ws`` under ``name``) and run :func:`setup_triangles`."""
     k_count = len(tri_fixed)
-    front = empty(ws, f"{name}.front", k_count, np.bool_)
-    ccw = empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64)
-    rows = empty(ws, f"{name}.rows", (k_count, 2), np.int64)
-    plane = empty(ws, f"{name}.plane", (k_count, 11))
-    setup_triangles(tri_fixed, tri_window, height, bool(cull_back), front, ccw, rows, plane)
-    return front, ccw, rows, plane
+    setup = TriangleSetup(front=empty(ws, f"{name}.front", k_count, np.bool_),
+                          ccw=empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64),
+                          rows=empty(ws, f"{name}.rows", (k_count, 2), np.int64),
+                          plane=empty(ws, f"{name}.plane", (k_count, 11)))
+    setup_triangles(tri_fixed, tri_window, height, bool(cull_back), *setup)
+    return setup
 
 
 def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
@@ -228,21 +238,18 @@ def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: in
     """Allocate the visibility buffer and fill it (the Python wrapper).
 
     Returns ``depth`` (H, W), ``tri_index`` (H, W), ``bary`` (H, W, 2) in window rows
-    (y up) and ``front`` (K,) per triangle. ``n_bands`` defaults to two per thread.
-    With a workspace ``ws`` every array lives in it. ``depth_test=False`` turns the
-    z-buffer test off; ``cull_back=True`` drops back-facing triangles.
+    (y up; see :func:`rasterize`) and ``front`` (K,) per triangle. ``n_bands``
+    defaults to two per thread (:func:`renderer.bands.raster_bands`). With a workspace
+    ``ws`` every array lives in it. ``depth_test=False`` turns the z-buffer test off;
+    ``cull_back=True`` drops back-facing triangles.
     """
     tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
     if len(tri_fixed) != len(tri_window):
         raise ValueError("tri_fixed and tri_window must hold the same triangles")
-    if n_bands is None:
-        n_bands = 2 * numba.get_num_threads()
-    n_bands = max(1, min(int(n_bands), height))
-    front, ccw, rows, plane = set_up(tri_fixed, tri_window, height, cull_back, ws, "raster")
+    setup = set_up(tri_fixed, tri_window, height, cull_back, ws, "raster")
     depth = empty(ws, "raster.depth", (height, width))
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int64)
-    bary = empty(ws, "raster.bary", (height, width, 2))  # read only where tri_index ≥ 0
-    rasterize(ccw, rows, plane, width, height, n_bands, FILL_RULES[fill_rule], bool(depth_test), depth, tri_index,
-              bary)
-    return depth, tri_index, bary, front
+    bary = empty(ws, "raster.bary", (height, width, 2))  # read only where tri_index is not EMPTY
+    rasterize(setup, raster_bands(height, n_bands), FILL_RULES[fill_rule], bool(depth_test), depth, tri_index, bary)
+    return depth, tri_index, bary, setup.front

@@ -1,25 +1,22 @@
-"""Stage 7, visibility buffer → 8-bit RGB: per-fragment normals, positions and lighting.
+"""Stage 7, visibility buffer → 8-bit RGB: per-fragment weights, normals, positions and colours.
 
 For each covered pixel the screen-space weights from :mod:`renderer.raster` are made
 perspective-correct (divide by clip w, renormalise), carried back through clipping to the
-source triangle, and used to interpolate its view-space position and normal; then
-:func:`renderer.lighting.vtk_lighting` colours the fragment and :func:`unorm8` stores it.
-All vectors in view space.
+source triangle, and used to interpolate what the object's **shading path**
+(:mod:`renderer.reflection.materials`) needs; then :func:`unorm8` stores the colour. All
+vectors in view space. By path:
 
-Normals by shading mode (VTK's OpenGL2 rules):
+- ``PIXEL_FACE_NORMAL``: the triangle's plane normal (v1 − v0) × (v2 − v0), turned toward
+  the viewer (perspective: so that n·P ≤ 0; parallel: n.z ≥ 0), lit per pixel;
+- ``PIXEL_TWO_SIDED``: the perspective-correct interpolation of the (unnormalised)
+  view-space vertex normals, normalised, negated on back faces, lit per pixel;
+- ``PIXEL_AS_GIVEN``: the same interpolated normal, never flipped, lit per pixel;
+- ``FACE_COLOUR``: the triangle's lit colour (:mod:`renderer.lit_colours`);
+- ``VERTEX_COLOUR``: its vertices' lit colours, interpolated.
 
-- ``flat``: the triangle's plane normal (v1 − v0) × (v2 − v0), turned toward the viewer
-  (perspective: so that n·P ≤ 0; parallel: n.z ≥ 0). Point normals are never used;
-  back faces are lit.
-- ``gouraud`` / ``phong`` with point normals: the perspective-correct interpolation of
-  the (unnormalised) view-space vertex normals, normalised, negated on back faces
-  (two-sided lighting). VTK has no per-vertex lighting, so both are per-pixel here.
-- without point normals every mode falls back to ``flat``.
-
-The textbook models (``model = "opengl" | "classic"``, :mod:`renderer.textbook_lighting`)
-light per triangle (flat, at the centroid), per vertex with the colours interpolated
-(gouraud) or per pixel with the interpolated normal (phong); their normals are used as
-given, never flipped.
+Per-pixel lighting goes through :func:`renderer.reflection.registry.reflect`, which picks
+the object's reflection model. A texture multiplies the lit colour (VTK, GL_MODULATE); the
+secondary colour (separate specular, zero unless asked for) is added after it.
 """
 from __future__ import annotations
 
@@ -29,9 +26,11 @@ from typing import NamedTuple
 import numpy as np
 from renderer.jit import njit, prange
 
-from renderer.lighting import vtk_lighting
-from renderer.textbook_lighting import textbook_lighting
-from renderer.texture import sample
+from renderer.bands import shading_bands
+from renderer.raster import EMPTY
+from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
+from renderer.reflection.registry import reflect
+from renderer.texture_sampling import sample_texture
 
 
 @njit(cache=True, inline="always")
@@ -56,24 +55,27 @@ def to_8bit(rgb: np.ndarray) -> np.ndarray:
 
 
 @njit(cache=True, inline="always")
-def fragment_weights(k, l1, l2, tri_clip, clip_bary, perspective, out):
-    """Weights of the *source* triangle's vertices at a fragment.
+def fragment_weights(frags, k, l1, l2):
+    """Weights ``(w0, w1, w2)`` of the *source* triangle's vertices at a fragment of clipped
+    triangle ``k``.
 
     ``l1, l2`` are screen-space weights of clipped triangle ``k``'s vertices 1 and 2.
-    Perspective-correct (what GPUs and VTK do): each is divided by that vertex's clip w
-    and the three renormalised. ``perspective=False`` keeps them screen-linear, as the
-    course's scanline slides interpolate. Then they are mapped through the clipped
+    Perspective-correct (``frags.perspective``, what GPUs and VTK do): each is divided by
+    that vertex's clip w and the three renormalised. Otherwise they stay screen-linear, as
+    the course's scanline slides interpolate. Then they are mapped through the clipped
     vertices' own weights in the source triangle.
     """
+    tri_clip, cb = frags.tri_clip, frags.clip_bary
     l0 = 1.0 - l1 - l2
-    if perspective:
+    if frags.perspective:
         b0, b1, b2 = l0 / tri_clip[k, 0, 3], l1 / tri_clip[k, 1, 3], l2 / tri_clip[k, 2, 3]
         s = b0 + b1 + b2
         b0, b1, b2 = b0 / s, b1 / s, b2 / s
     else:
         b0, b1, b2 = l0, l1, l2
-    for j in range(3):
-        out[j] = b0 * clip_bary[k, 0, j] + b1 * clip_bary[k, 1, j] + b2 * clip_bary[k, 2, j]
+    return (b0 * cb[k, 0, 0] + b1 * cb[k, 1, 0] + b2 * cb[k, 2, 0],
+            b0 * cb[k, 0, 1] + b1 * cb[k, 1, 1] + b2 * cb[k, 2, 1],
+            b0 * cb[k, 0, 2] + b1 * cb[k, 1, 2] + b2 * cb[k, 2, 2])
 
 
 @njit(cache=True, inline="always")
@@ -87,13 +89,6 @@ def plane_normal(a, b, c, n):
         n[0], n[1], n[2] = n[0] / length, n[1] / length, n[2] / length
 
 
-ROW_DECKS = 64
-"""Parallel loops over rows deal them out like cards: row r goes to deck r mod 64, and the
-decks are shared among the threads. Every thread then gets rows from all over the image;
-in contiguous blocks, a floor filling the lower half landed on one thread and the sky on
-the other (measured: 1 thread 12.7 ms, 2 threads 11.5 ms on ``near-plane``)."""
-
-
 @njit(cache=True)
 def face_normals(verts, triangles, out):
     """:func:`plane_normal` of every triangle (T, 3) of ``verts`` into ``out`` (T, 3), once
@@ -102,16 +97,14 @@ def face_normals(verts, triangles, out):
         plane_normal(verts[triangles[t, 0]], verts[triangles[t, 1]], verts[triangles[t, 2]], out[t])
 
 
-# How an object is shaded (ObjectTable.kind), chosen once per object in renderer.pipeline.
-VTK_FLAT, VTK_SMOOTH, FACE_COLOUR, VERTEX_COLOUR, TEXTBOOK_PIXEL = 0, 1, 2, 3, 4
-
-
 class Fragments(NamedTuple):
     """The visibility buffer and the clipped triangles it points into (window rows, y up).
 
-    tri_index (H, W) clipped triangle per pixel (−1 = empty); bary (H, W, 2) its
-    screen-space weights of vertices 1 and 2; front (K,); tri_clip (K, 3, 4); clip_bary
-    (K, 3, 3) weights in the source triangle; clip_source (K,) source triangle.
+    tri_index (H, W) clipped triangle per pixel (:data:`renderer.raster.EMPTY` = none);
+    bary (H, W, 2) its screen-space weights of vertices 1 and 2; front (K,); tri_clip
+    (K, 3, 4); clip_bary (K, 3, 3) weights in the source triangle; clip_source (K,) source
+    triangle; perspective: weights made perspective-correct (else screen-linear, see
+    :func:`fragment_weights`).
     """
 
     tri_index: np.ndarray
@@ -120,140 +113,109 @@ class Fragments(NamedTuple):
     tri_clip: np.ndarray
     clip_bary: np.ndarray
     clip_source: np.ndarray
+    perspective: bool
 
 
-class ObjectTable(NamedTuple):
-    """Per-object shading data (index = object) and the scene-wide light-model values.
+class ShadingInputs(NamedTuple):
+    """What shading reads besides the geometry and the fragments: ``materials``
+    (:class:`renderer.reflection.materials.Materials`), ``textures``
+    (:class:`renderer.texture_sampling.Textures`), ``lights``
+    (:class:`renderer.lights.ViewLights`) and ``lit`` (:class:`renderer.lit_colours.LitColours`)."""
 
-    kind : VTK_FLAT … TEXTBOOK_PIXEL. model : 0 vtk, 1 opengl, 2 classic.
-    complexity : VTK light complexity (0 when the object's lighting is off).
-    amb, dif, spe (O, 3), power (O,): see :func:`renderer.pipeline.object_table`.
-    global_ambient, ambient_light (3,), local_viewer, separate_specular: from the scene's
-    ``[render]``.
-    textured, tex_offset, tex_width, tex_height, tex_filter, tex_wrap (O,) and texels
-    (Σ H·W, 3) uint8: the objects' textures (see :func:`renderer.pipeline.texture_table`).
-    """
-
-    kind: np.ndarray
-    model: np.ndarray
-    complexity: np.ndarray
-    amb: np.ndarray
-    dif: np.ndarray
-    spe: np.ndarray
-    power: np.ndarray
-    global_ambient: np.ndarray
-    ambient_light: np.ndarray
-    local_viewer: bool
-    separate_specular: bool
-    textured: np.ndarray
-    tex_offset: np.ndarray
-    tex_width: np.ndarray
-    tex_height: np.ndarray
-    tex_filter: np.ndarray
-    tex_wrap: np.ndarray
-    texels: np.ndarray
+    materials: tuple
+    textures: tuple
+    lights: tuple
+    lit: tuple
 
 
 @njit(cache=True, inline="always")
-def interpolate(w, a, i0, i1, i2, out, first=0):
-    """out = w0·a[i0] + w1·a[i1] + w2·a[i2] over columns ``first .. first + 2`` of ``a``."""
-    for c in range(3):
-        out[c] = w[0] * a[i0, first + c] + w[1] * a[i1, first + c] + w[2] * a[i2, first + c]
+def interpolate(w, a, i0, i1, i2, first=0):
+    """``w0·a[i0] + w1·a[i1] + w2·a[i2]`` over columns ``first .. first + 2`` of ``a``, as a 3-tuple."""
+    return (w[0] * a[i0, first] + w[1] * a[i1, first] + w[2] * a[i2, first],
+            w[0] * a[i0, first + 1] + w[1] * a[i1, first + 1] + w[2] * a[i2, first + 1],
+            w[0] * a[i0, first + 2] + w[1] * a[i1, first + 2] + w[2] * a[i2, first + 2])
 
 
 @njit(cache=True, inline="always")
-def normalise(n):
-    length = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+def normalise(x, y, z):
+    """(x, y, z) scaled to unit length; a zero vector stays zero."""
+    length = math.sqrt(x * x + y * y + z * z)
     if length > 0.0:
-        for c in range(3):
-            n[c] /= length
+        return x / length, y / length, z / length
+    return x, y, z
 
 
 @njit(cache=True, inline="always")
-def fragment_colour(frags, k, l1, l2, geo, objs, lights, vert_colour, face_colour, parallel_camera, perspective,
-                    w, n, p, tex, spec, out):
-    """The linear colour of one fragment of clipped triangle ``k`` with screen-space weights
-    ``l1, l2`` (of its vertices 1 and 2) into ``out``; ``w, n, p, tex, spec`` are (3,) scratch.
-
-    Per object kind: VTK's per-fragment lighting with the plane normal (VTK_FLAT) or the
-    interpolated normal (VTK_SMOOTH); a lit colour per triangle (FACE_COLOUR) or
-    interpolated from lit vertices (VERTEX_COLOUR, Gouraud); the textbook model per
-    pixel with the interpolated normal (TEXTBOOK_PIXEL, Phong). Only the clipped-triangle
-    tables of ``frags`` (front, tri_clip, clip_bary, clip_source) are read.
+def fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit):
+    """The linear colour ``(r, g, b)`` of one fragment of clipped triangle ``k`` with
+    screen-space weights ``l1, l2`` (of its vertices 1 and 2), by its object's shading path
+    (see the module docstring). Only the clipped-triangle tables of ``frags`` (front,
+    tri_clip, clip_bary, clip_source) are read. Scalars and tuples only: it runs per pixel
+    (measured: writing into the rows of a scratch array instead, taken as views per fragment,
+    made shading 1.5× slower on ``course-phong``).
     """
-    tris, verts = geo.triangles, geo.verts_view
-    fragment_weights(k, l1, l2, frags.tri_clip, frags.clip_bary, perspective, w)
+    tris = geo.triangles
+    w = fragment_weights(frags, k, l1, l2)
     s = frags.clip_source[k]
     o = geo.tri_object[s]
     i0, i1, i2 = tris[s, 0], tris[s, 1], tris[s, 2]
-    kind = objs.kind[o]
-    for c in range(3):
-        spec[c] = 0.0
-    if kind == FACE_COLOUR:
-        for c in range(3):
-            out[c] = face_colour[s, c]
-            spec[c] = face_colour[s, 3 + c]
-    elif kind == VERTEX_COLOUR:
-        interpolate(w, vert_colour, i0, i1, i2, out)
-        interpolate(w, vert_colour, i0, i1, i2, spec, 3)
+    path = materials.shading_path[o]
+    if path == FACE_COLOUR:
+        r, g, b = lit.face[s, 0], lit.face[s, 1], lit.face[s, 2]
+        sr, sg, sb = lit.face[s, 3], lit.face[s, 4], lit.face[s, 5]
+    elif path == VERTEX_COLOUR:
+        r, g, b = interpolate(w, lit.vertex, i0, i1, i2)
+        sr, sg, sb = interpolate(w, lit.vertex, i0, i1, i2, 3)
     else:
-        interpolate(w, verts, i0, i1, i2, p)
-        if kind == VTK_FLAT:
-            for c in range(3):
-                n[c] = geo.face_normals[s, c]
-            if (n[2] < 0.0) if parallel_camera else (n[0] * p[0] + n[1] * p[1] + n[2] * p[2] > 0.0):
-                for c in range(3):
-                    n[c] = -n[c]
+        p = interpolate(w, geo.verts_view, i0, i1, i2)
+        if path == PIXEL_FACE_NORMAL:
+            nx, ny, nz = geo.face_normals[s, 0], geo.face_normals[s, 1], geo.face_normals[s, 2]
+            if (nz < 0.0) if geo.parallel else (nx * p[0] + ny * p[1] + nz * p[2] > 0.0):
+                nx, ny, nz = -nx, -ny, -nz
         else:
-            interpolate(w, geo.normals_view, i0, i1, i2, n)
-            normalise(n)
-            if kind == VTK_SMOOTH and not frags.front[k]:
-                for c in range(3):
-                    n[c] = -n[c]
-        if kind == TEXTBOOK_PIXEL:
-            textbook_lighting(objs.model[o], n, p, objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
-                              objs.global_ambient, objs.local_viewer, objs.separate_specular, objs.ambient_light,
-                              lights, out, spec)
-        else:
-            vtk_lighting(n, p, objs.complexity[o], objs.amb[o], objs.dif[o], objs.spe[o], objs.power[o],
-                         lights, out)
-    if objs.textured[o]:  # the texture multiplies the lit colour (VTK, GL_MODULATE) ...
+            nx, ny, nz = interpolate(w, geo.normals_view, i0, i1, i2)
+            nx, ny, nz = normalise(nx, ny, nz)
+            if path == PIXEL_TWO_SIDED and not frags.front[k]:
+                nx, ny, nz = -nx, -ny, -nz
+        r, g, b, sr, sg, sb = reflect((nx, ny, nz), p, o, materials, lights)
+    if textures.textured[o]:  # the texture multiplies the lit colour (VTK, GL_MODULATE) ...
         ts = w[0] * geo.tcoords[i0, 0] + w[1] * geo.tcoords[i1, 0] + w[2] * geo.tcoords[i2, 0]
         tt = w[0] * geo.tcoords[i0, 1] + w[1] * geo.tcoords[i1, 1] + w[2] * geo.tcoords[i2, 1]
-        sample(objs.texels, objs.tex_offset[o], objs.tex_width[o], objs.tex_height[o], objs.tex_filter[o],
-               objs.tex_wrap[o], ts, tt, tex)
-        for c in range(3):
-            out[c] *= tex[c]
-    for c in range(3):  # ... and the separate specular colour (zero unless asked for) comes after it
-        out[c] += spec[c]
+        tr, tg, tb = sample_texture(textures, o, ts, tt)
+        r, g, b = r * tr, g * tg, b * tb
+    return r + sr, g + sg, b + sb  # ... and the separate specular colour (zero unless asked for) comes after it
 
 
 @njit(cache=True, parallel=True)
-def shade(frags, geo, objs, lights, vert_colour, face_colour, parallel_camera, perspective, background, rgb):
+def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands, rgb):
     """Colour every covered pixel and store 8-bit RGB (the loop kernel).
 
-    Each covered pixel gets :func:`fragment_colour` of its visible fragment.
-    Rows are independent and each pixel is written once, so a parallel loop gives the
-    same bytes as a serial one. Rows are dealt out like cards (:data:`ROW_DECKS`).
-    ``background`` is the 8-bit clear colour.
+    Each covered pixel gets :func:`fragment_colour` of its visible fragment; an empty one
+    the 8-bit ``background``. Rows are independent and each pixel is written once, so a
+    parallel loop gives the same bytes as a serial one, whatever the number of bands
+    ``n_bands`` the rows are dealt to (:mod:`renderer.bands`).
     """
     height, width = frags.tri_index.shape
-    n_decks = min(height, ROW_DECKS)
-    for deck in prange(n_decks):
-        w = np.empty(3)
-        n = np.empty(3)
-        p = np.empty(3)
-        out = np.empty(3)
-        tex = np.empty(3)
-        spec = np.empty(3)
-        for row in range(deck, height, n_decks):
+    for band in prange(n_bands):
+        for row in range(band, height, n_bands):
             for col in range(width):
                 k = frags.tri_index[row, col]
-                if k < 0:
+                if k == EMPTY:
                     for c in range(3):
                         rgb[row, col, c] = background[c]
                     continue
-                fragment_colour(frags, k, frags.bary[row, col, 0], frags.bary[row, col, 1], geo, objs, lights,
-                                vert_colour, face_colour, parallel_camera, perspective, w, n, p, tex, spec, out)
-                for c in range(3):
-                    rgb[row, col, c] = unorm8(out[c])
+                r, g, b = fragment_colour(k, frags.bary[row, col, 0], frags.bary[row, col, 1], frags, geo, materials,
+                                          textures, lights, lit)
+                rgb[row, col, 0] = unorm8(r)
+                rgb[row, col, 1] = unorm8(g)
+                rgb[row, col, 2] = unorm8(b)
+
+
+def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, rgb: np.ndarray,
+          n_bands: int | None = None) -> None:
+    """Shade the visibility buffer ``frags`` into ``rgb`` (H, W, 3) uint8, window rows (the
+    Python wrapper). ``background`` is the 8-bit clear colour; ``n_bands`` defaults to
+    :func:`renderer.bands.shading_bands`."""
+    height = frags.tri_index.shape[0]
+    shade_rows(frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, background,
+               shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height)), rgb)

@@ -32,42 +32,63 @@ tenth to a third of the translucent pixels.
 """
 from __future__ import annotations
 
-import math
+from typing import NamedTuple
 
-import numba
 import numpy as np
 from renderer.jit import njit, prange
 
-from renderer.raster import FILL_RULES, first_row_of_band, pixel_fragment, row_span, set_up
-from renderer.shading import ROW_DECKS, Fragments, fragment_colour, unorm8
+from renderer.bands import first_row_of_band, raster_bands, shading_bands
+from renderer.raster import FILL_RULES, pixel_fragment, row_span, set_up
+from renderer.shading import Fragments, ShadingInputs, fragment_colour, unorm8
 from renderer.workspace import empty
 
 OIT, DEPTH_PEELING, SORTED = 0, 1, 2
 MODES = {"oit": OIT, "depth_peeling": DEPTH_PEELING, "sorted": SORTED}
 
 
-@njit(cache=True, parallel=True)
-def collect_fragments(ccw, rows, plane, width, height, n_bands, rule, depth_test, opaque_depth, fill, count, start,
-                      frag_tri, frag_bary, frag_z):
-    """Scan-convert the translucent triangles into per-pixel fragment lists (the loop kernel).
+class FragmentLists(NamedTuple):
+    """Every pixel's translucent fragments, in draw order, in flat arrays.
 
-    ``fill`` False: only ``count`` (H, W) the fragments of every pixel. ``fill`` True:
-    also write fragment ``j`` of pixel (row, col) at ``start[row, col] + j`` of
-    ``frag_tri`` (clipped triangle), ``frag_bary`` (screen-space weights of vertices 1
-    and 2) and ``frag_z`` (24-bit window depth). Bands of rows dealt like cards, in parallel, each drawing
-    every triangle in order (as :func:`renderer.raster.rasterize`), so each list is in
-    draw order. A fragment is kept where ``z <= opaque_depth`` (or always, without
-    ``depth_test``).
+    count (H, W) fragments per pixel; start (H, W) where a pixel's list starts in the flat
+    arrays (prefix sums of ``count``); tri (F,) clipped triangle, bary (F, 2) screen-space
+    weights of its vertices 1 and 2, z (F,) 24-bit window depth of each fragment;
+    longest: the longest list (at least 1), for the compositing scratch; opaque_depth (H, W)
+    the opaque z-buffer the lists were cut against (1.0 where no opaque surface is behind).
     """
+
+    count: np.ndarray
+    start: np.ndarray
+    tri: np.ndarray
+    bary: np.ndarray
+    z: np.ndarray
+    longest: int
+    opaque_depth: np.ndarray
+
+
+@njit(cache=True, parallel=True)
+def collect_fragments(setup, n_bands, rule, depth_test, opaque_depth, count, start, frag_tri, frag_bary, frag_z):
+    """Scan-convert the translucent triangles of ``setup`` into per-pixel fragment lists
+    (the loop kernel).
+
+    First pass, with empty ``frag_*`` arrays: only ``count`` (H, W), the fragments of every
+    pixel. Second pass: also write fragment ``j`` of pixel (row, col) at
+    ``start[row, col] + j`` of ``frag_tri`` (clipped triangle), ``frag_bary`` (screen-space
+    weights of vertices 1 and 2) and ``frag_z`` (24-bit window depth). Bands of rows dealt
+    like cards (:mod:`renderer.bands`), in parallel, each drawing every triangle in order
+    (as :func:`renderer.raster.rasterize`), so each list is in draw order. A fragment is
+    kept where ``z <= opaque_depth`` (or always, without ``depth_test``).
+    """
+    height, width = count.shape
+    fill = frag_tri.shape[0] > 0
     for b in prange(n_bands):
         for row in range(b, height, n_bands):
             for col in range(width):
                 count[row, col] = 0
-        for k in range(ccw.shape[0]):
-            for row in range(first_row_of_band(rows[k, 0], b, n_bands), rows[k, 1] + 1, n_bands):
-                first, last = row_span(k, row, ccw, width, rule)
+        for k in range(setup.ccw.shape[0]):
+            for row in range(first_row_of_band(setup.rows[k, 0], b, n_bands), setup.rows[k, 1] + 1, n_bands):
+                first, last = row_span(k, row, setup.ccw, width, rule)
                 for col in range(first, last + 1):
-                    l1, l2, z = pixel_fragment(k, row, col, plane)
+                    l1, l2, z = pixel_fragment(k, row, col, setup.plane)
                     if z <= opaque_depth[row, col] or not depth_test:
                         if fill:
                             i = start[row, col] + count[row, col]
@@ -214,118 +235,113 @@ def depth_order(z, m, order):
             i -= 1
 
 
+RED, GREEN, BLUE, ALPHA, DEPTH = range(5)
+"""The columns of a pixel's fragment list as :func:`composite_pixel` reads it: linear RGB
+0..1, alpha (the object's opacity) and window depth."""
+
+
 @njit(cache=True, inline="always")
-def composite_pixel(mode, colours, alpha, z, m, behind, opaque_behind, out, order, acc, front, back):
-    """Composite ``m`` fragments (``colours`` (M, 3) linear 0..1, ``alpha``, window depth
-    ``z``, in draw order) over the 8-bit colour ``behind`` (of an opaque surface if
-    ``opaque_behind``, else the background) into the 8-bit ``out``.
-    Scratch: ``order`` (M,) int, ``acc`` (3,) float, ``front`` and ``back`` (4,) int."""
+def composite_pixel(mode, fragments, m, behind, opaque_behind, out, order, acc, layers):
+    """Composite the ``m`` fragments of one pixel (``fragments`` (M, 5): r, g, b, alpha and
+    window depth, in draw order) over the 8-bit colour ``behind`` (of an opaque surface if
+    ``opaque_behind``, else the background) into the 8-bit ``out``, by ``mode``
+    (:data:`OIT`, :data:`DEPTH_PEELING` or :data:`SORTED`).
+    Scratch: ``order`` (M,) int, ``acc`` (3,) float, ``layers`` (2, 4) int (front, back)."""
+    colours, alpha = fragments[:, RED:ALPHA], fragments[:, ALPHA]
     if mode == OIT:
         weighted_average(colours, alpha, m, behind, acc, out)
         return
-    depth_order(z, m, order)
+    depth_order(fragments[:, DEPTH], m, order)
     if mode == DEPTH_PEELING:
-        front_to_back(colours, alpha, order, m, behind, opaque_behind, front, back, out)
+        front_to_back(colours, alpha, order, m, behind, opaque_behind, layers[0], layers[1], out)
     else:
         back_to_front(colours, alpha, order, m, behind, acc, out)
 
 
 @njit(cache=True, parallel=True)
-def shade_translucent(frags, start, count, frag_tri, frag_bary, frag_z, max_count, opacity, mode, opaque_depth, geo,
-                      objs, lights, vert_colour, face_colour, parallel_camera, perspective, rgb):
+def shade_translucent(frags, lists, mode, geo, materials, textures, lights, lit, n_bands, rgb):
     """Colour every pixel's fragment list and composite it over ``rgb`` (the loop kernel).
 
     ``frags`` holds the translucent clipped triangles' tables (its tri_index and bary are
-    not read); ``opacity`` (O,) per object; ``opaque_depth`` (H, W) the opaque z-buffer
-    (1.0 where empty); ``rgb`` (H, W, 3) uint8 holds the opaque result and receives the
-    composite. Rows are independent, dealt out like cards
-    (:data:`renderer.shading.ROW_DECKS`).
+    not read); ``lists`` the :class:`FragmentLists`; alpha is each object's
+    ``materials.opacity``; ``rgb`` (H, W, 3) uint8 holds the opaque result and receives the composite. Rows are
+    independent, dealt out to ``n_bands`` bands (:mod:`renderer.bands`).
     """
-    height, width = count.shape
-    n_decks = min(height, ROW_DECKS)
-    for deck in prange(n_decks):
-        w = np.empty(3)
-        n = np.empty(3)
-        p = np.empty(3)
-        tex = np.empty(3)
-        spec = np.empty(3)
-        lit = np.empty(3)
+    height, width = lists.count.shape
+    for band in prange(n_bands):
+        fragments = np.empty((lists.longest, 5))
         behind = np.empty(3, np.int64)
         out = np.empty(3, np.int64)
+        order = np.empty(lists.longest, np.int64)
         acc = np.empty(3)
-        front = np.empty(4, np.int64)
-        back = np.empty(4, np.int64)
-        colours = np.empty((max_count, 3))
-        alpha = np.empty(max_count)
-        z = np.empty(max_count)
-        order = np.empty(max_count, np.int64)
-        for row in range(deck, height, n_decks):
+        layers = np.empty((2, 4), np.int64)
+        for row in range(band, height, n_bands):
             for col in range(width):
-                m = count[row, col]
+                m = lists.count[row, col]
                 if m == 0:
                     continue
                 for j in range(m):
-                    i = start[row, col] + j
-                    k = frag_tri[i]
-                    fragment_colour(frags, k, frag_bary[i, 0], frag_bary[i, 1], geo, objs, lights, vert_colour,
-                                    face_colour, parallel_camera, perspective, w, n, p, tex, spec, lit)
-                    for c in range(3):
-                        colours[j, c] = lit[c]
-                    alpha[j] = opacity[geo.tri_object[frags.clip_source[k]]]
-                    z[j] = frag_z[i]
+                    i = lists.start[row, col] + j
+                    k = lists.tri[i]
+                    r, g, b = fragment_colour(k, lists.bary[i, 0], lists.bary[i, 1], frags, geo, materials, textures,
+                                              lights, lit)
+                    fragments[j, RED], fragments[j, GREEN], fragments[j, BLUE] = r, g, b
+                    fragments[j, ALPHA] = materials.opacity[geo.tri_object[frags.clip_source[k]]]
+                    fragments[j, DEPTH] = lists.z[i]
                 for c in range(3):
                     behind[c] = rgb[row, col, c]
-                composite_pixel(mode, colours, alpha, z, m, behind, opaque_depth[row, col] < 1.0, out, order, acc,
-                                front, back)
+                composite_pixel(mode, fragments, m, behind, lists.opaque_depth[row, col] < 1.0, out, order, acc,
+                                layers)
                 for c in range(3):
                     rgb[row, col, c] = out[c]
 
 
-def fragment_lists(tri_fixed, tri_window, width, height, opaque_depth, fill_rule="top-left", depth_test=True,
-                   cull_back=False, n_bands=None, ws=None):
-    """Rasterise translucent triangles into fragment lists (the Python wrapper).
+def fragment_lists(tri_fixed, tri_window, opaque_depth, fill_rule="top-left", depth_test=True, cull_back=False,
+                   n_bands=None, ws=None):
+    """Rasterise translucent triangles into fragment lists (the Python wrapper), over an
+    opaque frame whose z-buffer is ``opaque_depth`` (H, W).
 
-    Returns ``front`` (K,), ``count`` (H, W), ``start`` (H, W) and the flat ``frag_tri``,
-    ``frag_bary``, ``frag_z`` (see :func:`collect_fragments`).
+    Returns ``front`` (K,) and the :class:`FragmentLists` (see :func:`collect_fragments`).
     """
+    height, width = opaque_depth.shape
     tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
-    if n_bands is None:
-        n_bands = 2 * numba.get_num_threads()
-    n_bands = max(1, min(int(n_bands), height))
-    front, ccw, rows, plane = set_up(tri_fixed, tri_window, height, cull_back, ws, "translucency")
+    n_bands = raster_bands(height, n_bands)
+    setup = set_up(tri_fixed, tri_window, height, cull_back, ws, "translucency")
     rule = FILL_RULES[fill_rule]
     count = empty(ws, "translucency.count", (height, width), np.int64)
     start = empty(ws, "translucency.start", (height, width), np.int64)
-    none_i, none_b, none_z = np.empty(0, np.int64), np.empty((0, 2)), np.empty(0)
-    collect_fragments(ccw, rows, plane, width, height, n_bands, rule, bool(depth_test), opaque_depth, False, count,
-                      start, none_i, none_b, none_z)
+    collect_fragments(setup, n_bands, rule, bool(depth_test), opaque_depth, count, start, np.empty(0, np.int64),
+                      np.empty((0, 2)), np.empty(0))
     flat = start.reshape(-1)
     flat[0] = 0
     np.cumsum(count.reshape(-1)[:-1], out=flat[1:])
     total = int(flat[-1] + count[-1, -1])
-    frag_tri = empty(ws, "translucency.frag_tri", total, np.int64)
-    frag_bary = empty(ws, "translucency.frag_bary", (total, 2))
-    frag_z = empty(ws, "translucency.frag_z", total)
-    collect_fragments(ccw, rows, plane, width, height, n_bands, rule, bool(depth_test), opaque_depth, True, count,
-                      start, frag_tri, frag_bary, frag_z)
-    return front, count, start, frag_tri, frag_bary, frag_z
+    lists = FragmentLists(count, start, empty(ws, "translucency.frag_tri", total, np.int64),
+                          empty(ws, "translucency.frag_bary", (total, 2)), empty(ws, "translucency.frag_z", total),
+                          max(int(count.max()), 1), opaque_depth)
+    if total:
+        collect_fragments(setup, n_bands, rule, bool(depth_test), opaque_depth, *lists[:5])
+    return setup.front, lists
 
 
-def draw_translucent(tri_fixed, tri_window, tri_clip, clip_bary, clip_source, opaque_depth, rgb, geo, objs, lights,
-                     vert_colour, face_colour, opacity, mode="oit", parallel_camera=False, perspective=True,
-                     fill_rule="top-left", depth_test=True, cull_back=False, ws=None):
+def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mode="oit", perspective=True,
+                     rules=None, ws=None):
     """Draw the translucent clipped triangles over the opaque frame ``rgb`` (window rows, in place).
 
-    Returns the (H, W) bool mask of pixels that got at least one translucent fragment.
+    ``clipped`` : :class:`renderer.pipeline.ClippedTriangles` of the translucent triangles.
+    ``inputs`` : :class:`renderer.shading.ShadingInputs`. ``mode`` : a key of :data:`MODES`.
+    ``perspective`` : perspective-correct interpolation. ``rules`` : a
+    :class:`renderer.pipeline.RasterRules` (fill rule, depth test, back-face culling; the
+    defaults when None). Returns the (H, W) bool mask of pixels that got at least one
+    translucent fragment.
     """
-    height, width = opaque_depth.shape
-    front, count, start, frag_tri, frag_bary, frag_z = fragment_lists(
-        tri_fixed, tri_window, width, height, opaque_depth, fill_rule, depth_test, cull_back, ws=ws)
-    frags = Fragments(np.empty((0, 0), np.int64), np.empty((0, 0, 2)), front, np.ascontiguousarray(tri_clip),
-                      np.ascontiguousarray(clip_bary), np.ascontiguousarray(clip_source))
-    max_count = max(int(count.max()), 1)
-    shade_translucent(frags, start, count, frag_tri, frag_bary, frag_z, max_count,
-                      np.ascontiguousarray(opacity, dtype=np.float64), MODES[mode], opaque_depth, geo, objs, lights,
-                      vert_colour, face_colour, bool(parallel_camera), bool(perspective), rgb)
-    return count > 0
+    fill_rule, depth_test, cull_back = rules if rules is not None else ("top-left", True, False)
+    front, lists = fragment_lists(clipped.tri_fixed, clipped.tri_window, opaque_depth, fill_rule, depth_test,
+                                  cull_back, ws=ws)
+    frags = Fragments(np.empty((0, 0), np.int64), np.empty((0, 0, 2)), front, np.ascontiguousarray(clipped.tri_clip),
+                      np.ascontiguousarray(clipped.clip_bary), np.ascontiguousarray(clipped.clip_source),
+                      bool(perspective))
+    shade_translucent(frags, lists, MODES[mode], geo, inputs.materials, inputs.textures,
+                      inputs.lights, inputs.lit, shading_bands(opaque_depth.shape[0]), rgb)
+    return lists.count > 0

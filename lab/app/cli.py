@@ -11,6 +11,8 @@ import os
 import sys
 from pathlib import Path
 
+from lab.app import lessons_site
+from lab.app.exercises.command import add_parser as add_exercise_parser
 from lab.app.sweep import command as sweep_command
 from lab.loading import LARGE_SIZE, MAX_SIZE, SceneError, load_scene, size_problem
 from lab.presets import SCENES_DIR, preset_description, preset_names
@@ -313,11 +315,12 @@ def build_parser() -> argparse.ArgumentParser:
     _allow_large_arg(p)
     p.set_defaults(func=cmd_info)
 
-    p = sub.add_parser("lessons", help="lesson material: `scanlab lessons figures` makes the lesson figures")
+    p = sub.add_parser("lessons", help="lesson material: `scanlab lessons build` builds the lesson site")
     lsub = p.add_subparsers(dest="action", required=True, metavar="ACTION")
     q = lsub.add_parser("figures", help="render the measured figures the lessons show")
     q.add_argument("--out", default="lessons/figures", metavar="DIR", help="output folder (default lessons/figures)")
     q.set_defaults(func=cmd_lessons_figures)
+    lessons_site.add_parsers(lsub, UsageError)
 
     p = sub.add_parser("fuzz", help="feed mutated preset scene files to the loader; report any traceback",
                        description="Seeded random mutations of lab/scenes/*.toml, each loaded: it must give a scene "
@@ -327,6 +330,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--save", default="out/fuzz", metavar="DIR",
                    help="folder for failing inputs, each with a .txt of what happened (default out/fuzz)")
     p.set_defaults(func=cmd_fuzz)
+
+    add_exercise_parser(sub)
 
     p = sub.add_parser("demo", help="compare every preset scene and build a page of side-by-side panels")
     p.add_argument("--out", default="out/demo", metavar="DIR", help="output folder (default out/demo)")

@@ -1,6 +1,6 @@
 """Parity of the textbook models (fixed-function OpenGL, the course's) against references.
 
-flat and gouraud: VTK draws colours lit by compare/textbook_lighting.py (numpy, written
+flat and gouraud: VTK draws colours lit by compare/lit_reference/ (numpy, written
 apart from renderer/) unlit; phong: VTK with its fragment lighting replaced by the
 textbook formula. The bars are the foundation's.
 """

@@ -8,7 +8,8 @@ course's back-to-front formula in exact arithmetic; VTK's depth peeling rounds e
 layer to 8 bits (½ LSB each, up to four layers here, and clamps a layer at 1), so the two
 differ by rounding: the bars are checked after forgiving differences of at most
 :data:`PEELING_ROUNDING` LSB per channel (:func:`forgive_rounding`), and the raw
-differences are bounded as well. Coverage is checked as is.
+differences are bounded as well. Coverage is checked as is. The compositing of single pixels,
+worked by hand, is in ``tests/renderer/test_translucency.py``.
 """
 from __future__ import annotations
 
@@ -22,7 +23,6 @@ from compare.reference import render_reference
 from lab.frame import Frame
 from lab.loading import load_scene
 from renderer import render
-from renderer.translucency import DEPTH_PEELING, OIT, SORTED, composite_pixel, half
 
 PRESETS = ["translucent-two", "translucent-three"]
 MODES = ["oit", "depth_peeling", "sorted"]
@@ -41,41 +41,6 @@ def forgive_rounding(ours: Frame, ref: Frame, lsb: int) -> Frame:
     """``ours`` with every pixel within ``lsb`` (each channel) of the reference set to the reference's value."""
     close = (np.abs(ours.rgb.astype(np.int16) - ref.rgb).max(axis=-1) <= lsb)[..., None]
     return Frame(rgb=np.where(close, ref.rgb, ours.rgb), depth=ours.depth, coverage=ours.coverage)
-
-
-def composite(mode, colours, alphas, depths, behind, opaque_behind=False):
-    """One pixel through :func:`composite_pixel`: fragments in draw order, 8-bit ``behind``."""
-    m = len(alphas)
-    out = np.empty(3, np.int64)
-    composite_pixel(mode, np.array(colours, float), np.array(alphas, float), np.array(depths, float), m,
-                    np.array(behind, np.int64), opaque_behind, out, np.empty(m, np.int64), np.empty(3),
-                    np.empty(4, np.int64), np.empty(4, np.int64))
-    return tuple(int(c) for c in out)
-
-
-@pytest.mark.parametrize("mode, expected", [(OIT, (96, 96, 64)), (DEPTH_PEELING, (128, 64, 63)),
-                                            (SORTED, (128, 64, 64))])
-@pytest.mark.parametrize("draw_order", ["green first", "red first"])
-def test_red_over_green_on_blue(mode, expected, draw_order):
-    """Red α .5 in front of green α .5 on blue: OIT averages the two; the ordered modes put
-    red over green, VTK's 8-bit peeled layers one LSB below the exact (128, 64, 64) in blue
-    (the parity notes' measurement)."""
-    colours, depths = [[0, 1, 0], [1, 0, 0]], [0.6, 0.3]
-    if draw_order == "red first":
-        colours, depths = colours[::-1], depths[::-1]
-    assert composite(mode, colours, [0.5, 0.5], depths, (0, 0, 255)) == expected
-
-
-def test_half_rounds_as_a_16_bit_float_target():
-    """The OIT accumulators' rounding is IEEE half precision, ties to even."""
-    rng = np.random.default_rng(5)
-    halves = rng.random(3000).astype(np.float16).astype(np.float32)
-    ties = halves + np.spacing(halves.astype(np.float16)).astype(np.float32) / 2  # halfway to the next half
-    values = np.concatenate([rng.random(2000) * 4, rng.random(500) * 1e-4, rng.random(500) * 1e3, -rng.random(500),
-                             ties, [0.0, 1.0, 2049 / 2048, 1e-7, 2.0 ** -14, 2.0 ** -14 * (1 - 2.0 ** -11)]])
-    values = values.astype(np.float32)  # the kernels round float32 sums
-    ours = np.array([half(v) for v in values])
-    assert np.array_equal(ours, values.astype(np.float16).astype(np.float32))
 
 
 @pytest.mark.parametrize("name", PRESETS)

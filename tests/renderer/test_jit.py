@@ -1,7 +1,7 @@
 """The compiled-kernel cache never serves code older than the sources (renderer/jit.py).
 
-The end-to-end case reproduces the stale-kernel bug: ``shade`` (shading.py) inlines
-``vtk_lighting`` (lighting.py); editing only lighting.py must change the next render, in a
+The end-to-end case reproduces the stale-kernel bug: ``shade_rows`` (shading.py) inlines
+``vtk_lighting`` (reflection/vtk_model.py); editing only vtk_model.py must change the next render, in a
 fresh process, while an unchanged tree starts from its warm cache.
 """
 from __future__ import annotations
@@ -69,7 +69,7 @@ def test_an_edit_to_a_callee_in_another_file_shows_in_the_next_render(tmp_path):
     assert warm["seconds"] < cold["seconds"]
     print(f"start-up with the kernel cache cold {cold['seconds']:.1f} s, warm {warm['seconds']:.1f} s")
 
-    lighting = tree / "renderer" / "lighting.py"
+    lighting = tree / "renderer" / "reflection" / "vtk_model.py"
     source = lighting.read_text()
     assert source.count("df = max(1e-6, n[2])") == 1
     lighting.write_text(source.replace("df = max(1e-6, n[2])", "df = 0.5 * max(1e-6, n[2])"))
@@ -142,3 +142,47 @@ def test_kernels_are_filed_under_this_trees_hash():
     folder = jit.cache_folder()
     assert folder.name == "kernels-" + jit.source_hash()
     assert jit.SourceTreeLocator in __import__("numba").core.caching.CacheImpl._locator_classes
+
+
+def kernels(tree):
+    """The functions of a module decorated with ``njit`` (bare or called)."""
+    for node in ast.walk(tree):
+        if isinstance(node, ast.FunctionDef):
+            for d in node.decorator_list:
+                name = d.func if isinstance(d, ast.Call) else d
+                if isinstance(name, ast.Name) and name.id == "njit":
+                    yield node
+
+
+def writes_through_fields(function) -> list[str]:
+    """Assignments in ``function`` whose target is an element of an attribute: ``bundle.field[i] = …``."""
+    found = []
+    for node in ast.walk(function):
+        targets = node.targets if isinstance(node, ast.Assign) else [node.target] if isinstance(
+            node, (ast.AugAssign, ast.AnnAssign)) else []
+        for target in targets:
+            for t in (target.elts if isinstance(target, ast.Tuple) else [target]):
+                value = t
+                while isinstance(value, ast.Subscript):
+                    value = value.value
+                if t is not value and isinstance(value, ast.Attribute):
+                    found.append(f"{function.name}:{node.lineno}")
+    return found
+
+
+def test_no_kernel_writes_through_a_named_tuple_field():
+    """Kernels read their bundles (NamedTuples of arrays) but write only into plain arrays: inside a
+    ``prange`` loop, numba drops writes made through a NamedTuple's fields (numba issues #5872,
+    #7135, #10338: the frame silently keeps stale memory). Inlined helpers count, so every kernel
+    is held to it."""
+    offenders = []
+    for path in sorted((ROOT / "renderer").rglob("*.py")):
+        for kernel in kernels(ast.parse(path.read_text())):
+            offenders += [f"{path.name}:{w}" for w in writes_through_fields(kernel)]
+    assert offenders == []
+
+
+def test_the_field_write_check_sees_one():
+    code = ("@njit(cache=True)\ndef k(buf, out):\n    buf.depth[0, 1] = 1.0\n    out[0] = buf.depth[0, 0]\n"
+            "    a.b[0], c[1] = 1, 2\n")
+    assert writes_through_fields(next(kernels(ast.parse(code)))) == ["k:3", "k:5"]

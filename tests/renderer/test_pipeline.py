@@ -168,13 +168,13 @@ def test_vtk_model_clamps_the_specular_power_to_128_as_vtk_does():
     """vtkProperty clamps SpecularPower to [0, 128]: 1000 draws as 128 in the vtk model; the classic model keeps it."""
     from dataclasses import replace
 
-    from renderer.pipeline import object_table
+    from renderer.reflection.registry import material_table
 
     scene = tiny_scene()
     shiny = scene.objects[0]
     classic = replace(shiny, material=replace(shiny.material, specular_power=1000.0, model="classic"))
     objs = (replace(shiny, material=replace(shiny.material, specular_power=1000.0)), classic)
-    table = object_table(replace(scene, objects=objs), 3)
+    table = material_table(replace(scene, objects=objs))
     assert table.power.tolist() == [128.0, 1000.0]
     at_1000 = render(replace(scene, objects=objs[:1]))
     at_128 = render(replace(scene, objects=(replace(shiny, material=replace(shiny.material, specular_power=128.0)),)))

@@ -68,8 +68,10 @@ def test_every_writer_goes_through_atomic_file():
         for file in (REPO / folder).rglob("*.py"):
             if file.name == "atomic.py":
                 continue
-            if file.relative_to(REPO).as_posix() == "renderer/jit.py":
-                continue  # removes stale compiled-kernel folders: a cache, not an output
+            if file.relative_to(REPO).as_posix() in ("renderer/jit.py", "lessons/site/cache.py"):
+                continue  # remove stale compiled-kernel or figure-cache folders: caches, not outputs
+            if file.relative_to(REPO).as_posix() == "lab/app/exercises/runner.py":
+                continue  # the sandboxed child: status and results into its private temporary folder, renamed
             for number, line in enumerate(file.read_text().splitlines(), 1):
                 code = line.split("#")[0]
                 if plain.search(code) and "lab.atomic" not in code and "write_text(page" not in code \

@@ -1,0 +1,42 @@
+"""Rows dealt out like cards: how the parallel loops share an image's rows among threads.
+
+Every parallel loop over an image (:func:`renderer.raster.rasterize`,
+:func:`renderer.shading.shade_rows`, :mod:`renderer.translucency`) splits the rows into
+``n_bands`` **bands**: row r belongs to band r mod n_bands, and the bands are shared among
+the threads. Every band gets rows from all over the image; in contiguous blocks, a floor
+filling the lower half landed on one thread and the sky on the other (measured: 1 thread
+12.7 ms, 2 threads 11.5 ms on ``near-plane``).
+
+A pixel belongs to exactly one band and each band works through its rows in order, so the
+number of bands never changes a byte: a test renders with one band and with many.
+How many bands pay depends on the loop: the scan-conversion loops walk every triangle once
+per band (:func:`raster_bands`: two per thread), shading has no such cost
+(:data:`SHADING_BANDS`).
+"""
+from __future__ import annotations
+
+import numba
+
+from renderer.jit import njit
+
+SHADING_BANDS = 64
+"""Bands for the shading loops: many, so that two threads get even shares of costly rows."""
+
+
+def raster_bands(height: int, n_bands: int | None = None) -> int:
+    """Bands for a scan-conversion loop over ``height`` rows: ``n_bands``, by default two per
+    thread, at least 1 and at most one per row."""
+    if n_bands is None:
+        n_bands = 2 * numba.get_num_threads()
+    return max(1, min(int(n_bands), height))
+
+
+def shading_bands(height: int) -> int:
+    """Bands for a shading loop over ``height`` rows: :data:`SHADING_BANDS`, at most one per row."""
+    return max(1, min(height, SHADING_BANDS))
+
+
+@njit(cache=True, inline="always")
+def first_row_of_band(lo, band, n_bands):
+    """The first row ≥ ``lo`` that ``band`` owns (rows r with r mod n_bands = band)."""
+    return lo + (band - lo) % n_bands

@@ -1,0 +1,63 @@
+"""The reflection models, found by name: the registry, the per-object material table, the dispatch.
+
+Each model lives in a module of its own (:mod:`~renderer.reflection.vtk_model`,
+:mod:`~renderer.reflection.opengl_model`, :mod:`~renderer.reflection.classic_model`) and
+registers one :class:`~renderer.reflection.materials.ReflectionModel`: how it fills an
+object's material row, which shading path it gives an object, and its lighting kernel.
+This module is the one place that knows them all; nothing else in the renderer asks for a
+model by name. A model's code is its place in :data:`REFLECTION_MODELS`.
+
+numba cannot call a function chosen at run time, so :func:`reflect` is a hand-written
+dispatch on the code: a new model adds its entry below and one branch there.
+
+>>> sorted(REFLECTION_MODELS)
+['classic', 'opengl', 'vtk']
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from renderer.jit import njit
+from renderer.reflection import classic_model, opengl_model, vtk_model
+from renderer.reflection.classic_model import classic_lighting
+from renderer.reflection.materials import Materials
+from renderer.reflection.opengl_model import opengl_lighting
+from renderer.reflection.vtk_model import vtk_lighting
+
+REFLECTION_MODELS = {m.name: m for m in (vtk_model.MODEL, opengl_model.MODEL, classic_model.MODEL)}
+"""Model name (the scene's ``model``) → its :class:`~renderer.reflection.materials.ReflectionModel`."""
+
+CODES = {name: code for code, name in enumerate(REFLECTION_MODELS)}
+"""Model name → the code the kernels see in ``Materials.model``."""
+
+VTK, OPENGL, CLASSIC = CODES["vtk"], CODES["opengl"], CODES["classic"]
+
+
+@njit(cache=True, inline="always")
+def reflect(n, p, o, materials, lights):
+    """The lit colour of object ``o`` at view-space point ``p`` with unit normal ``n``, by its
+    model: ``(r, g, b, sr, sg, sb)``, the primary and the secondary (separate specular) RGB."""
+    model = materials.model[o]
+    if model == VTK:
+        return vtk_lighting(n, p, o, materials, lights)
+    if model == OPENGL:
+        return opengl_lighting(n, p, o, materials, lights)
+    return classic_lighting(n, p, o, materials, lights)
+
+
+def material_table(scene) -> Materials:
+    """Every object's row, filled by its reflection model (``material.reflection_model``:
+    an unlit object draws VTK's unlit colour)."""
+    model, path, lit, amb, dif, spe, power = [], [], [], [], [], [], []
+    for obj in scene.objects:
+        name = obj.material.reflection_model
+        room = REFLECTION_MODELS[name]
+        row = room.material_row(obj.material)
+        model.append(CODES[name])
+        path.append(room.shading_path(obj))
+        lit.append(obj.material.lighting)
+        amb.append(row.ambient), dif.append(row.diffuse), spe.append(row.specular), power.append(row.power)
+    as_int = lambda v: np.array(v, np.int64)  # noqa: E731
+    as_float = lambda v: np.array(v, np.float64)  # noqa: E731
+    return Materials(as_int(model), as_int(path), np.array(lit, np.bool_), as_float(amb), as_float(dif),
+                     as_float(spe), as_float(power), as_float([obj.material.opacity for obj in scene.objects]))

@@ -1,0 +1,26 @@
+"""What every reflection model shares: when an object is smooth, and where the textbook's pipeline lights it."""
+import numpy as np
+import pytest
+
+from lab.mesh import Mesh
+from lab.scene import SceneObject
+from lab.shapes import quad
+from renderer.reflection.materials import FACE_COLOUR, PIXEL_AS_GIVEN, VERTEX_COLOUR, smooth, textbook_path
+
+FLAT = quad(1.0)
+WITH_NORMALS = Mesh(FLAT.points, FLAT.triangles, point_normals=np.tile([0.0, 0.0, 1.0], (len(FLAT.points), 1)))
+
+
+@pytest.mark.parametrize("mesh, shading, expected", [
+    (WITH_NORMALS, "gouraud", True), (WITH_NORMALS, "phong", True), (WITH_NORMALS, "flat", False),
+    (FLAT, "gouraud", False), (FLAT, "phong", False)])
+def test_smooth_needs_vertex_normals_and_a_smooth_shading(mesh, shading, expected):
+    assert smooth(SceneObject(mesh=mesh, shading=shading)) is expected
+
+
+@pytest.mark.parametrize("mesh, shading, expected", [
+    (WITH_NORMALS, "flat", FACE_COLOUR), (WITH_NORMALS, "gouraud", VERTEX_COLOUR),
+    (WITH_NORMALS, "phong", PIXEL_AS_GIVEN), (FLAT, "gouraud", FACE_COLOUR), (FLAT, "phong", FACE_COLOUR)])
+def test_the_textbook_lights_faces_vertices_or_pixels(mesh, shading, expected):
+    """flat → once per triangle; gouraud → per vertex; phong → per pixel; without normals, flat."""
+    assert textbook_path(SceneObject(mesh=mesh, shading=shading)) == expected

@@ -1,0 +1,29 @@
+"""Rows dealt like cards: which rows a band owns, and how many bands a loop uses."""
+import numba
+import pytest
+
+from renderer.bands import SHADING_BANDS, first_row_of_band, raster_bands, shading_bands
+
+
+@pytest.mark.parametrize("lo, band, n_bands, first", [(0, 0, 4, 0), (0, 3, 4, 3), (5, 2, 4, 6), (5, 1, 4, 5),
+                                                      (6, 1, 4, 9), (7, 0, 1, 7)])
+def test_first_row_of_band(lo, band, n_bands, first):
+    """Band b owns rows r with r mod n = b: from row 5, band 2 of 4 starts at 6, band 1 at 5; from 6, band 1 at 9."""
+    assert first_row_of_band(lo, band, n_bands) == first
+    assert first % n_bands == band and lo <= first < lo + n_bands
+
+
+def test_every_row_goes_to_exactly_one_band():
+    """Rows 3..40 dealt to 7 bands: each row once."""
+    rows = sorted(r for b in range(7) for r in range(first_row_of_band(3, b, 7), 41, 7))
+    assert rows == list(range(3, 41))
+
+
+def test_raster_bands_default_to_two_per_thread_and_never_exceed_the_rows():
+    assert raster_bands(10_000) == 2 * numba.get_num_threads()
+    assert raster_bands(3, 8) == 3 and raster_bands(100, 5) == 5 and raster_bands(0, 5) == 1
+
+
+def test_shading_bands_are_many_but_at_most_one_per_row():
+    assert shading_bands(1000) == SHADING_BANDS == 64
+    assert shading_bands(5) == 5 and shading_bands(0) == 1

@@ -1,0 +1,162 @@
+"""Stage 7, shading: a fragment's weights, its normal by shading path, texture and separate specular, 8 bits.
+
+Tiny hand-made visibility buffers of one triangle in view space; every expected colour is
+worked out by hand in the test's docstring (8 bits: ``round_half_even(255·c)`` in float32).
+"""
+import numpy as np
+import pytest
+
+from renderer.lit_colours import LitColours
+from renderer.pipeline import SceneGeometry
+from renderer.reflection.materials import (FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED,
+                                           VERTEX_COLOUR)
+from renderer.shading import (Fragments, ShadingInputs, face_normals, fragment_weights, plane_normal, shade,
+                              to_8bit)
+from renderer.texture_sampling import NEAREST, REPEAT, Textures
+
+from .kernel_inputs import materials, view_lights
+
+BACKGROUND = np.array([10, 20, 30], np.uint8)
+UNTEXTURED = Textures(np.array([False]), np.zeros(1, np.int64), np.ones(1, np.int64), np.ones(1, np.int64),
+                      np.array([NEAREST]), np.array([REPEAT]), np.full((1, 3), 255, np.uint8))
+
+
+def triangle(verts_view, normals=None, w=(1.0, 1.0, 1.0), parallel=False):
+    """SceneGeometry of one triangle (object 0) with view-space corners ``verts_view``, vertex
+    ``normals`` (zeros if None) and clip w per corner."""
+    verts = np.asarray(verts_view, np.float64)
+    clip = np.c_[verts, np.asarray(w)]
+    normals = np.zeros((3, 3)) if normals is None else np.asarray(normals, np.float64)
+    tris = np.array([[0, 1, 2]])
+    plane = np.empty((1, 3))
+    face_normals(verts, tris, plane)
+    return SceneGeometry(verts, clip, normals, tris, np.zeros(1, np.int64), np.zeros(3, np.int64), np.zeros((3, 2)),
+                         plane, parallel)
+
+
+def fragments(geo, bary, front=True, perspective=False, clip_bary=None):
+    """Every pixel of a (H, W) image covered by the triangle, with screen-space weights ``bary`` (H, W, 2)."""
+    bary = np.asarray(bary, np.float64)
+    return Fragments(np.zeros(bary.shape[:2], np.int64), bary, np.array([front]), geo.verts_clip[None],
+                     np.eye(3)[None] if clip_bary is None else np.asarray(clip_bary, np.float64)[None],
+                     np.zeros(1, np.int64), perspective)
+
+
+def shade_all(frags, geo, mats, lit=None, textures=UNTEXTURED, lights=None, n_bands=None):
+    rgb = np.full(frags.tri_index.shape + (3,), 7, np.uint8)
+    lit = lit if lit is not None else LitColours(np.zeros((3, 6)), np.zeros((1, 6)))
+    shade(frags, geo, ShadingInputs(mats, textures, lights if lights is not None else view_lights(complexity=1), lit),
+          BACKGROUND, rgb, n_bands)
+    return rgb
+
+
+# --------------------------------------------------------------------------- weights and normals
+def test_screen_linear_weights_are_the_rasteriser_weights():
+    """l1 = l2 = 1/3 with clip w (1, 2, 4), screen-linear: (1/3, 1/3, 1/3) whatever w."""
+    frags = fragments(triangle(np.eye(3), w=(1, 2, 4)), [[[1 / 3, 1 / 3]]])
+    np.testing.assert_allclose(fragment_weights(frags, 0, 1 / 3, 1 / 3), [1 / 3, 1 / 3, 1 / 3])
+
+
+def test_perspective_weights_divide_by_clip_w_and_renormalise():
+    """l = (1/3, 1/3, 1/3), w = (1, 2, 4): (1/3, 1/6, 1/12) / (7/12) = (4/7, 2/7, 1/7)."""
+    frags = fragments(triangle(np.eye(3), w=(1, 2, 4)), [[[1 / 3, 1 / 3]]], perspective=True)
+    np.testing.assert_allclose(fragment_weights(frags, 0, 1 / 3, 1 / 3), [4 / 7, 2 / 7, 1 / 7])
+
+
+def test_weights_are_carried_back_through_clipping():
+    """Clipped vertex 1 is the midpoint of source vertices 0 and 1; (l0, l1, l2) = (.5, .25, .25) →
+    .5·(1, 0, 0) + .25·(.5, .5, 0) + .25·(0, 0, 1) = (.625, .125, .25)."""
+    frags = fragments(triangle(np.eye(3)), [[[0.25, 0.25]]], clip_bary=[[1, 0, 0], [0.5, 0.5, 0], [0, 0, 1]])
+    np.testing.assert_allclose(fragment_weights(frags, 0, 0.25, 0.25), [0.625, 0.125, 0.25])
+
+
+def test_plane_normal_is_the_unit_cross_product_and_zero_when_degenerate():
+    """(1,0,0) − 0 × (0,2,0) − 0 = (0,0,2) → (0,0,1); three points on a line → 0."""
+    n = np.empty(3)
+    plane_normal(np.zeros(3), np.array([1.0, 0, 0]), np.array([0, 2.0, 0]), n)
+    np.testing.assert_allclose(n, [0, 0, 1])
+    plane_normal(np.zeros(3), np.array([1.0, 0, 0]), np.array([2.0, 0, 0]), n)
+    np.testing.assert_allclose(n, [0, 0, 0])
+
+
+# --------------------------------------------------------------------------- colours by path
+def test_vertex_colours_are_interpolated():
+    """VERTEX_COLOUR, vertices lit red, green, blue; screen weights l1 = l2 = .25 → (.5, .25, .25) →
+    (127.5, 63.75, 63.75) → (128, 64, 64); an empty pixel shows the background."""
+    geo = triangle([[0, 0, -2], [1, 0, -2], [0, 1, -2]])
+    frags = fragments(geo, [[[0.25, 0.25], [0.0, 0.0]]])
+    frags = frags._replace(tri_index=np.array([[0, -1]]))
+    lit = LitColours(np.c_[np.eye(3), np.zeros((3, 3))], np.zeros((1, 6)))
+    rgb = shade_all(frags, geo, materials(0, 0, 0, 1, path=VERTEX_COLOUR), lit)
+    assert rgb.tolist() == [[[128, 64, 64], [10, 20, 30]]]
+
+
+def test_a_face_colour_is_held_and_its_secondary_colour_added():
+    """FACE_COLOUR: primary (.2, .4, .6) + secondary (.2, 0, 0) = (.4, .4, .6) → (102, 102, 153) at any weights."""
+    geo = triangle([[0, 0, -2], [1, 0, -2], [0, 1, -2]])
+    lit = LitColours(np.zeros((3, 6)), np.array([[0.2, 0.4, 0.6, 0.2, 0.0, 0.0]]))
+    rgb = shade_all(fragments(geo, [[[0.1, 0.7], [0.5, 0.5]]]), geo, materials(0, 0, 0, 1, path=FACE_COLOUR), lit)
+    assert rgb.tolist() == [[[102, 102, 153]] * 2]
+
+
+def test_the_texture_modulates_the_primary_colour_and_not_the_secondary():
+    """Texel (128, 255, 255) times primary (1, .5, .5) = (128/255, .5, .5), plus secondary (.2, 0, 0):
+    red 128 + 51 = 179, green and blue 127.5 → 128."""
+    geo = triangle([[0, 0, -2], [1, 0, -2], [0, 1, -2]])
+    lit = LitColours(np.zeros((3, 6)), np.array([[1.0, 0.5, 0.5, 0.2, 0.0, 0.0]]))
+    textured = UNTEXTURED._replace(textured=np.array([True]), texels=np.array([[128, 255, 255]], np.uint8))
+    rgb = shade_all(fragments(geo, [[[0.2, 0.2]]]), geo, materials(0, 0, 0, 1, path=FACE_COLOUR), lit, textured)
+    assert rgb.tolist() == [[[179, 128, 128]]]
+
+
+# Under a lone headlight (VTK's complexity 1) df = max(1e-6, n.z): a normal toward the eye gives
+# Amb + Dif = (.1, .1, .1) + (.3, .5, .7) = (.4, .6, .8) → (102, 153, 204); a normal away gives
+# Amb + 1e-6·Dif → (26, 26, 26).
+AMB, DIF = (0.1, 0.1, 0.1), (0.3, 0.5, 0.7)
+TOWARD, AWAY = [102, 153, 204], [26, 26, 26]
+CLOCKWISE = [[0, 0, -2], [0, 1, -2], [1, 0, -2]]  # seen from the eye: plane normal (0, 0, −1), away from it
+
+
+@pytest.mark.parametrize("parallel", [False, True])
+def test_the_face_normal_path_turns_the_plane_normal_toward_the_viewer(parallel):
+    """PIXEL_FACE_NORMAL: the plane normal (0, 0, −1) of a clockwise triangle is flipped toward the eye."""
+    geo = triangle(CLOCKWISE, parallel=parallel)
+    rgb = shade_all(fragments(geo, [[[0.25, 0.25]]]), geo, materials(AMB, DIF, 0, 1, path=PIXEL_FACE_NORMAL))
+    assert rgb.tolist() == [[TOWARD]]
+
+
+@pytest.mark.parametrize("front, expected", [(True, AWAY), (False, TOWARD)])
+def test_the_two_sided_path_negates_the_normal_on_back_faces(front, expected):
+    """PIXEL_TWO_SIDED: vertex normals (0, 0, −1) used as they are on a front face, negated on a back face."""
+    geo = triangle(CLOCKWISE, normals=[[0, 0, -1]] * 3)
+    rgb = shade_all(fragments(geo, [[[0.25, 0.25]]], front=front), geo,
+                    materials(AMB, DIF, 0, 1, path=PIXEL_TWO_SIDED))
+    assert rgb.tolist() == [[expected]]
+
+
+@pytest.mark.parametrize("front", [True, False])
+def test_the_as_given_path_never_flips_the_normal(front):
+    """PIXEL_AS_GIVEN, the classic model, light toward −z from the eye: normals (0, 0, −1) face away
+    from it on either face, so ambient only, Ka·O·A = (.4, .4, .4) → 102."""
+    geo = triangle(CLOCKWISE, normals=[[0, 0, -1]] * 3)
+    rgb = shade_all(fragments(geo, [[[0.25, 0.25]]], front=front), geo,
+                    materials((0.4, 0.4, 0.4), DIF, 0, 1, model="classic", path=PIXEL_AS_GIVEN),
+                    lights=view_lights([{"direction": (0, 0, -1)}]))
+    assert rgb.tolist() == [[[102, 102, 102]]]
+
+
+def test_bands_of_rows_do_not_change_a_byte():
+    """7×5 pixels with random weights: one band, three, or one per row give the same bytes, and every
+    pixel is written (none keeps the fill value 7)."""
+    geo = triangle([[0, 0, -2], [1, 0, -2], [0, 1, -2]])
+    bary = np.random.default_rng(3).random((7, 5, 2)) / 2
+    lit = LitColours(np.c_[np.eye(3), np.zeros((3, 3))], np.zeros((1, 6)))
+    frames = [shade_all(fragments(geo, bary), geo, materials(0, 0, 0, 1, path=VERTEX_COLOUR), lit, n_bands=n)
+              for n in (1, 3, 7, None)]
+    assert all(np.array_equal(frames[0], f) for f in frames[1:])
+    assert not (frames[0] == 7).all(axis=-1).any()
+
+
+def test_to_8bit_rounds_half_to_even_in_float32():
+    """127.5 → 128, 63.75 → 64, 0.5/255 → 0, 1.5/255 → 2."""
+    assert to_8bit(np.array([0.5, 0.25, 0.5 / 255, 1.5 / 255])).tolist() == [128, 64, 0, 2]
