@@ -13,7 +13,7 @@ from pathlib import Path
 
 from lab.app import lessons_site
 from lab.app.exercises.command import add_parser as add_exercise_parser
-from lab.app.sweep import command as sweep_command
+from lab.app.sweep import sweep_command
 from lab.loading import LARGE_SIZE, MAX_SIZE, SceneError, load_scene, size_problem
 from lab.presets import SCENES_DIR, preset_description, preset_names
 from lab.scene import MODELS, SHADINGS

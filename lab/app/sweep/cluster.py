@@ -6,7 +6,7 @@ with one thread each (each worker then runs one case at a time in its case proce
 with ``dask scheduler`` and ``dask worker`` (the workers need scanlab installed, and the
 sweep's files at the same paths).
 
-Every case is one task (:func:`lab.app.sweep.worker.run_case`) submitted with ``retries=1``.
+Every case is one task (:func:`lab.app.sweep.case_runner.run_case`) submitted with ``retries=1``.
 A worker lost mid-case has its case run again on another worker; the local cluster's
 scheduler gives up on a case after its second lost worker (``allowed-failures = 1``; a
 cluster of your own keeps its own setting, 3 by default). Such a case is recorded as
@@ -22,7 +22,7 @@ import time
 from contextlib import contextmanager
 from typing import Iterator
 
-from lab.app.sweep.worker import PLUGIN_NAME, CaseRunner, run_case
+from lab.app.sweep.case_runner import PLUGIN_NAME, CaseRunner, run_case
 
 
 class ClusterError(RuntimeError):

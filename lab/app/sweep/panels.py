@@ -12,8 +12,9 @@ from pathlib import Path
 import numpy as np
 
 from compare.images import delta_e_figure, side_by_side_figure
+from lab.app.sweep.worst import CASE_FILES
 
-PANEL_FILES = ("side_by_side.png", "delta_e.png")
+FRAMES, *PANEL_FILES = CASE_FILES
 
 
 def case_title(row: dict) -> str:
@@ -33,7 +34,7 @@ def metrics_of(row: dict) -> dict:
 def draw_panels(folder: Path, row: dict) -> bool:
     """Draw the two panels into ``folder`` from its ``frames.npz`` unless they are newer than
     it; False if the case has no frames."""
-    frames = folder / "frames.npz"
+    frames = folder / FRAMES
     if not frames.exists():
         return False
     if all((folder / name).exists() and (folder / name).stat().st_mtime >= frames.stat().st_mtime

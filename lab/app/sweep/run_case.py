@@ -66,10 +66,10 @@ def run_one_case(scene, name: str, reference: str | None = None) -> CaseOutcome:
 
 def pack_frames(outcome: CaseOutcome) -> bytes:
     """The outcome's images, ΔE map (float32) and masks as compressed ``.npz`` bytes."""
-    buffer = io.BytesIO()
-    np.savez_compressed(buffer, ours=outcome.ours, reference=outcome.reference,
-                        delta_e=outcome.delta_e.astype(np.float32), shared=outcome.shared, mismatch=outcome.mismatch)
-    return buffer.getvalue()
+    with io.BytesIO() as f:  # in memory: the sweep writes the bytes (lab.atomic) where it keeps them
+        np.savez_compressed(f, ours=outcome.ours, reference=outcome.reference,
+                            delta_e=outcome.delta_e.astype(np.float32), shared=outcome.shared, mismatch=outcome.mismatch)
+        return f.getvalue()
 
 
 @functools.lru_cache(maxsize=4)

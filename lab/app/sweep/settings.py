@@ -21,7 +21,7 @@ import os
 from dataclasses import dataclass, replace
 from typing import Callable
 
-from lab.app.sweep.lights import LIGHT_SETS
+from lab.app.sweep.light_sets import LIGHT_SETS
 from lab.loading import MAX_SIZE
 from lab.normals import NORMAL_MODES, with_normals
 from lab.scene import HIDDEN_SURFACES, INTERPOLATIONS, MODELS, SHADINGS, TRANSPARENCIES, Scene

@@ -22,9 +22,13 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from lab.app.sweep.cluster import ClusterError
 from lab.app.sweep.cases import Case, build_grid, expand, read_grid_file
+from lab.app.sweep.cluster import ClusterError, open_client, run_cases, worker_count
+from lab.app.sweep.histograms import write_histograms
+from lab.app.sweep.panels import draw_panels
+from lab.app.sweep.progress import Progress, duration
 from lab.app.sweep.sources import find_sources
+from lab.app.sweep.sweep_page import build_page
 from lab.app.sweep.table import ResultsTable, row_for
 from lab.app.sweep.worst import FrameStore
 
@@ -80,8 +84,6 @@ def _say(text: str) -> None:
 def run_cases_into(options: SweepOptions, pending: list[Case], table: ResultsTable, store: FrameStore,
                    progress, run: str) -> int:
     """Run ``pending`` on the cluster, writing rows and frames as they arrive; the number of workers."""
-    from lab.app.sweep.cluster import open_client, run_cases, worker_count
-
     by_id = {case.case_id: case for case in pending}
     with open_client(options.scheduler, options.workers, options.memory_limit) as client:
         workers = worker_count(client)
@@ -93,7 +95,7 @@ def run_cases_into(options: SweepOptions, pending: list[Case], table: ResultsTab
             for case_id, response in batch:
                 frames = response.pop("frames", None)
                 if frames is not None:
-                    store.save(case_id, frames)
+                    store.write_frames(case_id, frames)
                 rows.append(row_for(by_id[case_id], response, run))
             table.append(rows, run)
             store.consider(rows)
@@ -104,10 +106,6 @@ def run_cases_into(options: SweepOptions, pending: list[Case], table: ResultsTab
 
 
 def _outputs(options: SweepOptions, table: ResultsTable, store: FrameStore, facts: dict) -> Path:
-    from lab.app.sweep.histograms import write_histograms
-    from lab.app.sweep.page import build_page
-    from lab.app.sweep.panels import draw_panels
-
     facts["table"] = str(table.compact())
     rows = table.rows()
     kept = {row["case_id"] for row in rows if draw_panels(store.folder(row["case_id"]), row)}
@@ -118,8 +116,6 @@ def _outputs(options: SweepOptions, table: ResultsTable, store: FrameStore, fact
 def run_sweep(options: SweepOptions, progress_stream=None) -> int:
     """Do the whole sweep; exit status 0 (every case of this sweep passes), 1 (any FAIL or
     unfinished case), 130 (interrupted)."""
-    from lab.app.sweep.progress import Progress, duration
-
     cases = plan(options)
     options.out.mkdir(parents=True, exist_ok=True)
     table = ResultsTable(options.out)

@@ -13,11 +13,13 @@ keeps those of the ``keep`` worst cases and deletes the others as soon as they d
 """
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 from compare.metrics import PARITY_BARS
 from lab.atomic import atomic_file
+
+CASE_FILES = ("frames.npz", "side_by_side.png", "delta_e.png")
+"""What a case's folder holds: its frames, and the panels drawn from them (:mod:`.panels`)."""
 
 BAR_COLUMNS = {"coverage_mismatch": "coverage_mismatch", "pixels_over_1": "pixels_over_1",
                "mean": "delta_e_2000_mean"}
@@ -51,12 +53,12 @@ class FrameStore:
         return self.root / case_id
 
     def has_frames(self, case_id: str) -> bool:
-        return (self.folder(case_id) / "frames.npz").exists()
+        return (self.folder(case_id) / CASE_FILES[0]).exists()
 
-    def save(self, case_id: str, frames: bytes) -> None:
+    def write_frames(self, case_id: str, frames: bytes) -> None:
         """Write a case's frames (atomically; a rerun of the case replaces them)."""
         self.folder(case_id).mkdir(parents=True, exist_ok=True)
-        with atomic_file(self.folder(case_id) / "frames.npz") as f:
+        with atomic_file(self.folder(case_id) / CASE_FILES[0]) as f:
             f.write(frames)
 
     def consider(self, rows: list[dict]) -> None:
@@ -69,5 +71,13 @@ class FrameStore:
             return
         ranked = sorted(self._kept, key=self._kept.get, reverse=True)
         for case_id in ranked[self.keep:]:
-            shutil.rmtree(self.folder(case_id), ignore_errors=True)
+            self._remove(case_id)
             del self._kept[case_id]
+
+    def _remove(self, case_id: str) -> None:
+        """Delete the files the sweep put in a case's folder, then the folder if that left it empty."""
+        folder = self.folder(case_id)
+        for name in CASE_FILES:
+            (folder / name).unlink(missing_ok=True)
+        if folder.is_dir() and not any(folder.iterdir()):
+            folder.rmdir()

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import pytest
 
-from lab.app.sweep.lights import LIGHT_SETS
+from lab.app.sweep.light_sets import LIGHT_SETS
 from lab.app.sweep.settings import GRID_KEYS, TEST_FAULTS_ENV, apply_settings, grid_keys
 from lab.loading import load_scene
 

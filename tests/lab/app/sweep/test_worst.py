@@ -24,20 +24,20 @@ def test_worst_first_ranks_compared_cases_only():
 def test_only_the_worst_keep_their_frames_unless_all_are_kept(tmp_path):
     store = FrameStore(tmp_path, keep=2)
     for i, mean in enumerate([0.01, 0.5, 0.02, 0.3]):
-        store.save(f"c{i}", b"frames")
+        store.write_frames(f"c{i}", b"frames")
         store.consider([row(f"c{i}", mean=mean)])
     assert sorted(p.name for p in store.root.iterdir()) == ["c1", "c3"]
     everything = FrameStore(tmp_path / "all", keep=1, keep_all=True)
     for i in range(3):
-        everything.save(f"c{i}", b"frames")
+        everything.write_frames(f"c{i}", b"frames")
         everything.consider([row(f"c{i}", mean=i)])
     assert len(list(everything.root.iterdir())) == 3
 
 
 def test_a_resumed_sweep_takes_in_the_frames_it_finds(tmp_path):
-    FrameStore(tmp_path, keep=5).save("old", b"frames")
+    FrameStore(tmp_path, keep=5).write_frames("old", b"frames")
     store = FrameStore(tmp_path, keep=1)
     store.consider([row("old", mean=0.01), row("gone", mean=9)])
-    store.save("new", b"frames")
+    store.write_frames("new", b"frames")
     store.consider([row("new", mean=0.5)])
     assert [p.name for p in store.root.iterdir()] == ["new"]

@@ -12,7 +12,7 @@ import shlex
 import sys
 from pathlib import Path
 
-from lab.app.sweep.lights import LIGHT_SETS
+from lab.app.sweep.light_sets import LIGHT_SETS
 from lab.app.sweep.settings import GRID_KEYS
 
 DESCRIPTION = """\

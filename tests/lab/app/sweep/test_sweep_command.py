@@ -4,7 +4,7 @@ from __future__ import annotations
 import pytest
 
 from lab.app import cli
-from lab.app.sweep.lights import LIGHT_SETS
+from lab.app.sweep.light_sets import LIGHT_SETS
 from lab.app.sweep.settings import GRID_KEYS
 
 

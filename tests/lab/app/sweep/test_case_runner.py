@@ -4,7 +4,7 @@ from __future__ import annotations
 import pickle
 import threading
 
-from lab.app.sweep.worker import PLUGIN_NAME, CaseRunner
+from lab.app.sweep.case_runner import PLUGIN_NAME, CaseRunner
 
 
 def test_the_plugin_pickles_to_a_fresh_one_with_the_same_memory_limit():

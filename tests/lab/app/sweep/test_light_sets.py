@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import pytest
 
-from lab.app.sweep.lights import LIGHT_SETS
+from lab.app.sweep.light_sets import LIGHT_SETS
 from lab.app.sweep.run_case import run_one_case
 from lab.app.sweep.settings import apply_settings
 from lab.loading import load_scene

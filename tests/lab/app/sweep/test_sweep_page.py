@@ -6,7 +6,7 @@ import json
 import re
 from pathlib import Path
 
-from lab.app.sweep.page import build_page
+from lab.app.sweep.sweep_page import build_page
 
 from ....browser import broken_images, open_browser, watch
 
