@@ -1,0 +1,115 @@
+"""One case, in the case's own process: load the source, apply the settings, compare.
+
+:func:`run_one_case` is the only place a sweep calls the comparison (scanlab's render,
+VTK's render, the ΔE2000 metrics and the verdict against the parity bars); it builds the
+same ``metrics.json`` dict as ``scanlab compare`` (:func:`compare.report.compare_scene`), but
+writes nothing: the frames travel back to the sweep, which keeps those of the worst cases.
+
+:func:`execute` wraps it for one request from the sweep: it loads the source (the last few
+loaded scenes are kept, so a source's cases load it once per process), applies the grid's
+settings (:mod:`lab.app.sweep.settings`), triggers a test-only fault if asked
+(:mod:`lab.app.sweep.faults`), and turns anything that goes wrong into a response with a
+status instead of an exception.
+"""
+from __future__ import annotations
+
+import functools
+import io
+import time
+import traceback
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from compare.metrics import compare_frames, coverage_masks, failed_bars
+from compare.reference import render_reference
+from compare.report import model_label, reference_label, shading_label, timed_render
+from lab.app.sweep.faults import FAULTS
+from lab.app.sweep.settings import apply_settings
+from lab.app.sweep.sources import load_source
+from lab.loading import SceneError
+
+
+@dataclass(frozen=True)
+class CaseOutcome:
+    """What one comparison gives: ``metrics`` (the keys of ``metrics.json``), the parity bars
+    it fails (``[]`` = pass), both images ((H, W, 3) uint8, row 0 at the top), the ΔE2000
+    map ((H, W) float, 0 off the shared coverage) and the two coverage masks ((H, W) bool)."""
+
+    metrics: dict
+    failed_bars: list[str]
+    ours: np.ndarray
+    reference: np.ndarray
+    delta_e: np.ndarray
+    shared: np.ndarray
+    mismatch: np.ndarray
+
+    @property
+    def verdict(self) -> str:
+        return "FAIL" if self.failed_bars else "pass"
+
+
+def run_one_case(scene, name: str, reference: str | None = None) -> CaseOutcome:
+    """Compare ``scene`` as ``scanlab compare`` does (``reference="vtk-native"`` as its
+    ``--reference``), judged against the parity bars of :func:`compare.metrics.failed_bars`."""
+    ours, ours_ms = timed_render(scene)
+    timings: dict = {}
+    ref = render_reference(scene, timings=timings, reference=reference)
+    measured, de = compare_frames(ours, ref)
+    shared, mismatch = coverage_masks(ours, ref)
+    metrics = {"scene": name, "shading": shading_label(scene), "size": list(scene.image.size), **measured,
+               "ours_ms": round(ours_ms, 3), "reference_ms": round(timings["reference_ms"], 3),
+               "model": model_label(scene), "reference": reference_label(scene, reference)}
+    return CaseOutcome(metrics, failed_bars(measured), ours.rgb, ref.rgb, de, shared, mismatch)
+
+
+def pack_frames(outcome: CaseOutcome) -> bytes:
+    """The outcome's images, ΔE map (float32) and masks as compressed ``.npz`` bytes."""
+    with io.BytesIO() as f:  # in memory: the sweep writes the bytes (lab.atomic) where it keeps them
+        np.savez_compressed(f, ours=outcome.ours, reference=outcome.reference,
+                            delta_e=outcome.delta_e.astype(np.float32), shared=outcome.shared, mismatch=outcome.mismatch)
+        return f.getvalue()
+
+
+@functools.lru_cache(maxsize=4)
+def _scene(kind: str, key: str):
+    return load_source(kind, key)
+
+
+def _failure(status: str, exc: BaseException, started: float) -> dict:
+    message = " ".join(f"{type(exc).__name__}: {exc}".split())[:500]
+    return {"status": status, "error": message, "traceback": traceback.format_exc()[-4000:],
+            "case_s": time.perf_counter() - started}
+
+
+def execute(request: dict) -> dict:
+    """Run one request — ``kind``, ``key`` and ``name`` of the source, ``settings`` (grid key →
+    canonical value), ``marker`` (a per-case path for test-only faults) — and return the
+    response: ``status`` "ok" with ``metrics``, ``verdict``, ``failed_bars``, ``frames``
+    (:func:`pack_frames`), or "error" / "out of memory" with ``error`` (one line) and
+    ``traceback``; always ``load_s`` and ``case_s`` (seconds)."""
+    started = time.perf_counter()
+    settings = dict(request["settings"])
+    try:
+        scene = apply_settings(_scene(request["kind"], request["key"]), settings)
+    except SceneError as exc:
+        return {**_failure("error", exc, started), "error": f"cannot load: {exc}"}
+    except MemoryError as exc:
+        return _failure("out of memory", exc, started)
+    except Exception as exc:  # noqa: BLE001 -- a case's failure is a result, not the sweep's end
+        return _failure("error", exc, started)
+    loaded = time.perf_counter()
+    try:
+        if "fault" in settings:
+            FAULTS[settings["fault"]](Path(request["marker"]))
+        reference = None if settings.get("reference", "auto") == "auto" else settings["reference"]
+        outcome = run_one_case(scene, request["name"], reference)
+        frames = pack_frames(outcome)
+    except MemoryError as exc:
+        return {**_failure("out of memory", exc, started), "load_s": loaded - started}
+    except Exception as exc:  # noqa: BLE001
+        return {**_failure("error", exc, started), "load_s": loaded - started}
+    return {"status": "ok", "metrics": outcome.metrics, "verdict": outcome.verdict,
+            "failed_bars": outcome.failed_bars, "frames": frames, "load_s": loaded - started,
+            "case_s": time.perf_counter() - started}
