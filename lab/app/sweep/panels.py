@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from compare.images import delta_e_figure, side_by_side_figure
+from compare.images import PanelText, delta_e_figure, side_by_side_figure
 from lab.app.sweep.worst import CASE_FILES
 
 FRAMES, *PANEL_FILES = CASE_FILES
@@ -44,6 +44,6 @@ def draw_panels(folder: Path, row: dict) -> bool:
         ours, ref, de = data["ours"], data["reference"], data["delta_e"].astype(np.float64)
         shared, mismatch = data["shared"], data["mismatch"]
     side_by_side_figure(ours, ref, de, mismatch, metrics_of(row), folder / "side_by_side.png",
-                        title=case_title(row), shared=shared)
+                        PanelText(title=case_title(row)), shared=shared)
     delta_e_figure(de, mismatch, folder / "delta_e.png", shared=shared)
     return True

@@ -22,9 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from compare.metrics import compare_frames, coverage_masks, failed_bars
-from compare.reference import render_reference
-from compare.report import model_label, reference_label, shading_label, timed_render
+from compare.metrics import coverage_masks
 from lab.app.sweep.faults import FAULTS
 from lab.app.sweep.settings import apply_settings
 from lab.app.sweep.sources import load_source
@@ -34,34 +32,29 @@ from lab.loading import SceneError
 @dataclass(frozen=True)
 class CaseOutcome:
     """What one comparison gives: ``metrics`` (the keys of ``metrics.json``), the parity bars
-    it fails (``[]`` = pass), both images ((H, W, 3) uint8, row 0 at the top), the ΔE2000
-    map ((H, W) float, 0 off the shared coverage) and the two coverage masks ((H, W) bool)."""
+    it fails (``[]`` = pass), the verdict (``"pass"``, ``"FAIL"``, ``"fails as meant"`` ...;
+    :class:`compare.verdict.Verdict`), both images ((H, W, 3) uint8, row 0 at the top), the
+    ΔE2000 map ((H, W) float, 0 off the shared coverage) and the two coverage masks ((H, W) bool)."""
 
     metrics: dict
     failed_bars: list[str]
+    verdict: str
     ours: np.ndarray
     reference: np.ndarray
     delta_e: np.ndarray
     shared: np.ndarray
     mismatch: np.ndarray
 
-    @property
-    def verdict(self) -> str:
-        return "FAIL" if self.failed_bars else "pass"
-
 
 def run_one_case(scene, name: str, reference: str | None = None) -> CaseOutcome:
-    """Compare ``scene`` as ``scanlab compare`` does (``reference="vtk-native"`` as its
-    ``--reference``), judged against the parity bars of :func:`compare.metrics.failed_bars`."""
-    ours, ours_ms = timed_render(scene)
-    timings: dict = {}
-    ref = render_reference(scene, timings=timings, reference=reference)
-    measured, de = compare_frames(ours, ref)
-    shared, mismatch = coverage_masks(ours, ref)
-    metrics = {"scene": name, "shading": shading_label(scene), "size": list(scene.image.size), **measured,
-               "ours_ms": round(ours_ms, 3), "reference_ms": round(timings["reference_ms"], 3),
-               "model": model_label(scene), "reference": reference_label(scene, reference)}
-    return CaseOutcome(metrics, failed_bars(measured), ours.rgb, ref.rgb, de, shared, mismatch)
+    """Compare ``scene`` exactly as ``scanlab compare`` does (:func:`compare.comparison.run_comparison`,
+    ``reference="vtk-native"`` as its ``--reference``), judged by the same verdict."""
+    from compare.comparison import run_comparison
+
+    result = run_comparison(scene, name=name, reference=reference)
+    shared, mismatch = coverage_masks(result.ours_frame, result.reference_frame)
+    return CaseOutcome(result.metrics, list(result.verdict.failed), result.verdict.status, result.ours,
+                       result.reference, result.delta_e, shared, mismatch)
 
 
 def pack_frames(outcome: CaseOutcome) -> bytes:

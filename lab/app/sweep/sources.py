@@ -11,11 +11,12 @@ path of a file, or the preset name or shape spec as given.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 
 from lab import shapes
-from lab.loading import SceneError, default_camera, load_scene, parse_shape_spec, shape_scene
+from lab.loading import SceneError, load_scene, parse_shape_spec
+from lab.mesh_scene import mesh_file_scene
 from lab.presets import preset_names
 from lab.scene import Scene
 
@@ -76,25 +77,8 @@ def find_sources(texts: list[str]) -> list[Source]:
     return list(unique.values())
 
 
-def mesh_scene(path: str) -> Scene:
-    """A mesh file framed as a scene, as a built-in shape is (:func:`lab.loading.shape_scene`):
-    the shapes' grey-blue material, a camera that frames the mesh, one headlight.
-
-    Raises SceneError (from the reader's one-line MeshFileError) for a file that cannot be read.
-    """
-    from lab.meshfiles import MeshFileError, read_mesh
-
-    try:
-        mesh = read_mesh(path)
-    except MeshFileError as exc:
-        raise SceneError(str(exc)) from None
-    template = shape_scene("cube")
-    obj = replace(template.objects[0], mesh=mesh, name=Path(path).stem)
-    return replace(template, objects=(obj,), camera=default_camera(obj.world_bounds()), source=str(path),
-                   inputs=(str(path),))
-
-
 def load_source(kind: str, key: str) -> Scene:
     """The scene of a source (in the case's process): a scene file, preset or shape through
-    :func:`lab.loading.load_scene`, a mesh file through :func:`mesh_scene`."""
-    return mesh_scene(key) if kind == "mesh" else load_scene(key)
+    :func:`lab.loading.load_scene`, a mesh file through :func:`lab.mesh_scene.mesh_file_scene`
+    (framed and lit as a built-in shape is, as ``scanlab compare`` shows it)."""
+    return mesh_file_scene(key) if kind == "mesh" else load_scene(key)

@@ -22,6 +22,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from compare.verdict import FAIL, PASSES_UNEXPECTEDLY
 from lab.app.sweep.cases import Case, build_grid, expand, read_grid_file
 from lab.app.sweep.cluster import ClusterError, open_client, run_cases, worker_count
 from lab.app.sweep.histograms import write_histograms
@@ -71,10 +72,14 @@ def request_for(case: Case, out: Path) -> dict:
             "marker": str(out / ".faults" / case.case_id)}
 
 
+NOT_OK = (FAIL, PASSES_UNEXPECTEDLY)
+"""Verdicts that fail a sweep: a FAIL, and a scene meant to fail that passes (:mod:`compare.verdict`)."""
+
+
 def _failed(row: dict) -> tuple[bool, bool]:
     """(failed, did not finish) for the progress bar and the exit status."""
     unfinished = row["status"] != "ok"
-    return unfinished or row["verdict"] == "FAIL", unfinished
+    return unfinished or row["verdict"] in NOT_OK, unfinished
 
 
 def _say(text: str) -> None:

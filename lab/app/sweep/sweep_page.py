@@ -10,6 +10,7 @@ import html
 import json
 from pathlib import Path
 
+from compare.verdict import FAIL, FAILS_AS_MEANT, PASS, PASSES_UNEXPECTEDLY
 from lab.app.sweep.panels import case_title
 from lab.app.sweep.worst import bar_ratio, worst_first
 from lab.atomic import write_text
@@ -148,8 +149,8 @@ def build_page(out: Path, rows: list[dict], kept: set[str], histograms: list[Pat
     ranked = worst_first(rows)
     ranks = {r["case_id"]: i for i, r in enumerate(ranked, 1)}
     shown = [r for r in ranked if r["case_id"] in kept]
-    passed = sum(r["status"] == "ok" and r["verdict"] == "pass" for r in rows)
-    failed = sum(r["status"] == "ok" and r["verdict"] == "FAIL" for r in rows)
+    passed = sum(r["status"] == "ok" and r["verdict"] in (PASS, FAILS_AS_MEANT) for r in rows)
+    failed = sum(r["status"] == "ok" and r["verdict"] in (FAIL, PASSES_UNEXPECTEDLY) for r in rows)
     unfinished = sum(r["status"] != "ok" for r in rows)
     figures = "".join(f"<p><img loading='lazy' src='histograms/{_e(p.name)}' alt='histograms {_e(p.stem)}'></p>"
                       for p in histograms) or "<p>No compared case yet.</p>"

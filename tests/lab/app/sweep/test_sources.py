@@ -4,8 +4,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from lab.app.sweep.sources import find_sources, load_source, mesh_scene
-from lab.loading import SceneError, default_camera, load_scene
+from lab.app.sweep.sources import find_sources, load_source
+from lab.loading import SceneError, load_scene
 from lab.meshfiles import write_mesh
 from lab.presets import SCENES_DIR
 
@@ -44,18 +44,17 @@ def test_an_empty_folder_is_refused(tmp_path):
         find_sources([str(tmp_path)])
 
 
-def test_a_mesh_file_is_framed_and_lit_as_a_built_in_shape():
-    scene, shape = mesh_scene(str(TORUS)), load_scene("cube")
+def test_a_mesh_source_is_the_scene_scanlab_compare_makes_of_the_file():
+    """The sweep frames a mesh file as `scanlab compare FILE` does (lab.mesh_scene), a built-in shape's way."""
+    scene, shape = load_source("mesh", str(TORUS)), load_scene("cube")
     assert scene.objects[0].material == shape.objects[0].material and scene.lights == shape.lights
     assert scene.objects[0].mesh.n_triangles == load_scene("torus-mesh").objects[0].mesh.n_triangles
-    framed = default_camera(scene.world_bounds())
-    assert np.allclose(scene.camera.position, framed.position) and np.allclose(scene.camera.focal_point,
-                                                                               framed.focal_point)
-    assert load_source("mesh", str(TORUS)).objects[0].name == "torus"
+    same = load_scene(str(TORUS))
+    assert np.allclose(scene.camera.position, same.camera.position) and scene.objects[0].name == "torus"
 
 
 def test_an_unreadable_mesh_file_gives_a_scene_error_for_its_case(tmp_path):
     bad = tmp_path / "bad.ply"
     bad.write_text("ply\nformat ascii 1.0\nelement vertex 1\n")
     with pytest.raises(SceneError, match="bad.ply"):
-        mesh_scene(str(bad))
+        load_source("mesh", str(bad))
