@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from compare.images import PanelText, delta_e_figure, side_by_side_figure
-from lab.app.sweep.worst import CASE_FILES
+from lab.app.sweep.worst_cases import CASE_FILES
 
 FRAMES, *PANEL_FILES = CASE_FILES
 

@@ -31,7 +31,7 @@ from lab.app.sweep.progress import Progress, duration
 from lab.app.sweep.sources import find_sources
 from lab.app.sweep.sweep_page import build_page
 from lab.app.sweep.table import ResultsTable, row_for
-from lab.app.sweep.worst import FrameStore
+from lab.app.sweep.worst_cases import FrameStore
 
 
 @dataclass

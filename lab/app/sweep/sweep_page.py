@@ -12,7 +12,7 @@ from pathlib import Path
 
 from compare.verdict import FAIL, FAILS_AS_MEANT, PASS, PASSES_UNEXPECTEDLY
 from lab.app.sweep.panels import case_title
-from lab.app.sweep.worst import bar_ratio, worst_first
+from lab.app.sweep.worst_cases import bar_ratio, worst_first
 from lab.atomic import write_text
 
 STYLE = """

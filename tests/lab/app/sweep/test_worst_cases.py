@@ -1,7 +1,7 @@
 """The worst cases: scored against the parity bars; only the worst few keep their frames."""
 from __future__ import annotations
 
-from lab.app.sweep.worst import FrameStore, bar_ratio, score, worst_first
+from lab.app.sweep.worst_cases import FrameStore, bar_ratio, score, worst_first
 
 
 def row(case_id, mean=0.0, over=0.0, coverage=0.0, p999=0.0, top=0.0, status="ok"):
