@@ -30,8 +30,10 @@ LANGUAGES = ("en", "ja")
 NAMES = {"en": "English", "ja": "日本語"}
 
 _ANSI = re.compile(r"\x1b\[[0-9;]*m")
-_STEP = re.compile(r"^(reading sources|writing output)\.\.\. \[\s*(\d+)%\] (?!\S*LC_MESSAGES)", re.M)
-"""Sphinx's progress lines (not those of compiling the .po catalogs, which also say "writing output")."""
+_STEP = re.compile(r"^(reading sources|writing output)\.\.\. \[\s*(\d+)%\] ", re.M)
+"""Sphinx's progress lines. Compiling the .po catalogs also says "writing output", before the
+HTML build starts (and the catalog's name comes in a write of its own): such lines are
+skipped until "building [html]" has been seen."""
 
 
 class BuildFailed(Exception):
@@ -50,17 +52,18 @@ class Progress:
 
     def __init__(self, languages: tuple[str, ...], stream=sys.stdout):
         self.languages, self.stream = languages, stream
-        self.index, self.fraction, self.started = 0, 0.0, time.perf_counter()
+        self.index, self.fraction, self.started, self.html = 0, 0.0, time.perf_counter(), False
         self.log: list[str] = []
 
     def start(self, i: int) -> None:
-        self.index, self.fraction = i, 0.0
+        self.index, self.fraction, self.html = i, 0.0, False
         self.draw("starting")
 
     def write(self, text: str) -> int:
         text = _ANSI.sub("", text)
         self.log.append(text)
-        for phase, pct in _STEP.findall(text):
+        self.html = self.html or "building [html]" in text
+        for phase, pct in _STEP.findall(text) if self.html else ():
             self.fraction = (0.8 if phase == "reading sources" else 0.2) * int(pct) / 100 + \
                 (0.8 if phase == "writing output" else 0.0)
             self.draw(phase.split()[0])
