@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from lab.app.cli import main
-from lab.app.lessons_site import LESSONS, BuildFailed, Progress, build_site, chooser_page, safe_jobs
+from lab.app.lesson_site.build import LESSONS, BuildFailed, Progress, build_site, chooser_page, safe_jobs
 
 CONF = f"""
 exec(open({str(LESSONS / 'conf.py')!r}).read())
