@@ -201,6 +201,22 @@ def worst_pixel(ours: Frame, ref: Frame, de: np.ndarray) -> dict | None:
             "delta_e": round(p.delta_e, 4), "coverage": p.coverage, "caption": p.caption()}
 
 
+def compare_scene(scene, out_dir, name: str | None = None, reference: str | None = None, bars: dict | None = None,
+                  stages: bool = False) -> dict:
+    """Render ``scene`` both ways, measure, judge, write the five output files; return the metrics.
+
+    The metrics dict is what ``metrics.json`` holds (see the README): scene, shading,
+    size, delta_e_2000 {mean, median, p95, p99, p999, max}, pixels_over_1,
+    coverage_mismatch, max_channel_diff, depth, ours_ms, reference_ms, model, the
+    reference used (picked per object by :func:`compare.textbook_reference.object_reference`;
+    ``reference="vtk-native"`` forces VTK's own shading everywhere) and the verdict
+    against ``bars`` (:mod:`compare.verdict`). ``stages`` adds ``stages.png``.
+    """
+    result = run_comparison(scene, name=name, reference=reference, bars=bars, stages=stages)
+    result.write(out_dir)
+    return result.metrics
+
+
 def compare(scene_or_plotter, *, name: str | None = None, shading: str | None = None,
             size: tuple[int, int] | None = None, model: str | None = None, reference: str | None = None,
             bars: dict | None = None, stages: bool = False, timings: bool = True) -> Comparison:

@@ -1,9 +1,8 @@
-"""One comparison run: both renderers, the verdict, the files a person opens.
+"""What a comparison run reports: the labels that name a run (model, shading, reference),
+its one-line summary, the files it writes (:data:`OUTPUT_FILES`) and ``metrics.json``.
 
-:func:`compare_scene` draws a scene with scanlab's renderer and with VTK, measures and
-judges them (:mod:`compare.comparison`) and writes ``ours.png``, ``vtk.png``,
-``delta_e.png``, ``side_by_side.png`` and ``metrics.json`` into a folder. The labels
-that name a run (model, shading, reference) live here.
+The run itself, both renderers measured and judged, is :mod:`compare.comparison`
+(:func:`compare.comparison.compare_scene` writes these files into a folder).
 """
 from __future__ import annotations
 
@@ -15,7 +14,7 @@ from compare.textbook_reference import scene_reference, uses_separate_specular
 from lab.atomic import write_text
 
 OUTPUT_FILES = ("ours.png", "vtk.png", "delta_e.png", "side_by_side.png", "metrics.json")
-"""The files :func:`compare_scene` writes into its folder (and ``stages.png`` with the stages)."""
+"""The files :func:`compare.comparison.compare_scene` writes into its folder (and ``stages.png`` with the stages)."""
 
 
 def timed_render(scene, warm: bool = True, options=None):
@@ -56,24 +55,6 @@ def reference_label(scene, reference: str | None = None) -> str:
     name = scene_reference(scene, reference)
     separate = any(uses_separate_specular(o, scene) for o in scene.objects)
     return name + "+separate-specular" if separate and name != "vtk-native" else name
-
-
-def compare_scene(scene, out_dir, name: str | None = None, reference: str | None = None, bars: dict | None = None,
-                  stages: bool = False) -> dict:
-    """Render ``scene`` both ways, measure, judge, write the five output files; return the metrics.
-
-    The metrics dict is what ``metrics.json`` holds (see the README): scene, shading,
-    size, delta_e_2000 {mean, median, p95, p99, p999, max}, pixels_over_1,
-    coverage_mismatch, max_channel_diff, depth, ours_ms, reference_ms, model, the
-    reference used (picked per object by :func:`compare.textbook_reference.object_reference`;
-    ``reference="vtk-native"`` forces VTK's own shading everywhere) and the verdict
-    against ``bars`` (:mod:`compare.verdict`). ``stages`` adds ``stages.png``.
-    """
-    from compare.comparison import run_comparison  # it builds on this module's labels
-
-    result = run_comparison(scene, name=name, reference=reference, bars=bars, stages=stages)
-    result.write(out_dir)
-    return result.metrics
 
 
 def summary_line(m: dict) -> str:

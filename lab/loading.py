@@ -8,8 +8,6 @@ All validation happens here, at the edge, every value read through
 from __future__ import annotations
 
 import errno
-import inspect
-import math
 import os
 import tomllib
 from dataclasses import replace
@@ -22,9 +20,10 @@ from lab.mesh import Mesh
 from lab.presets import preset_names, preset_path
 from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, TRANSPARENCIES, Camera, Image,
                        Light, Material, RenderSettings, Scene, SceneObject, headlight)
-from lab.suggest import did_you_mean
-from lab.values import IS_A_FOLDER, MAX_MAGNITUDE, file_problem, real, show
+from lab.framing import make_shape, mesh_file_scene, shape_scene
 from lab.matrices import model_matrix
+from lab.suggest import did_you_mean
+from lab.values import IS_A_FOLDER, file_problem, show
 from lab.validation import SceneError, Table, quantise_colour
 
 MAX_SIZE = 8192
@@ -277,85 +276,10 @@ def _mesh_file(s: Table, base: Path | None, value, inputs: list) -> Mesh:
         raise s.error("mesh", str(exc)) from None
 
 
-# --------------------------------------------------------------------------- shapes
-def make_shape(name, params: dict, where=None) -> Mesh:
-    """Build a built-in shape by name with keyword parameters, checking both.
-
-    ``where(message)`` makes the exception to raise (so a scene file can name its key).
-    """
-    err = where or SceneError
-    if not isinstance(name, str) or name not in shapes.SHAPES:
-        hint = did_you_mean(name, shapes.SHAPES) if isinstance(name, str) else ""
-        raise err(f"unknown shape {show(name)}{hint}; valid: {', '.join(shapes.SHAPES)}")
-    sig = inspect.signature(shapes.SHAPES[name])
-    for key, value in params.items():
-        if key not in sig.parameters:
-            raise err(f"{name} has no parameter {show(key)}{did_you_mean(str(key), sig.parameters)}; "
-                      f"valid: {', '.join(sig.parameters)}")
-        default = sig.parameters[key].default
-        lo, hi = shapes.PARAM_RANGES.get((name, key), (0, 8))
-        if isinstance(default, int) and (not isinstance(value, int) or isinstance(value, bool) or not lo <= value <= hi):
-            raise err(f"{name}: {key} must be a whole number in {lo}..{hi}, got {show(value)}")
-        if isinstance(default, float) and not 0 < (real(value) or 0) <= MAX_MAGNITUDE:
-            raise err(f"{name}: {key} must be a positive number up to {MAX_MAGNITUDE:g}, got {show(value)}")
-    return shapes.SHAPES[name](**params)
-
-
-def parse_shape_spec(spec: str) -> tuple[str, dict]:
-    """``"icosphere:level=3,radius=2"`` → ``("icosphere", {"level": 3, "radius": 2.0})``."""
-    name, _, rest = spec.partition(":")
-    params = {}
-    for item in filter(None, rest.split(",")):
-        key, eq, value = item.partition("=")
-        if not eq:
-            raise SceneError(f"{spec}: expected key=value, got {item!r}")
-        try:
-            params[key.strip()] = int(value)
-        except ValueError:
-            try:
-                params[key.strip()] = float(value)
-            except ValueError:
-                raise SceneError(f"{spec}: {key}: expected a number, got {value!r}") from None
-    return name.strip(), params
-
-
-def default_camera(bounds: np.ndarray, view_angle: float = 30.0) -> Camera:
-    """A camera that frames ``bounds`` the way ``vtkRenderer::ResetCamera`` does.
-
-    Focal point at the bounds' centre; distance = radius / sin(view_angle / 2) with radius
-    half the bounds' diagonal; looking from the direction (1, 0.8, 1.6) with y up.
-    """
-    lo, hi = bounds[0::2], bounds[1::2]
-    centre = (lo + hi) / 2.0
-    radius = max(float(np.linalg.norm(hi - lo)) / 2.0, 1e-6)
-    dist = radius / math.sin(math.radians(view_angle) / 2.0)
-    direction = np.array([1.0, 0.8, 1.6]) / np.linalg.norm([1.0, 0.8, 1.6])
-    return Camera(position=tuple(centre + dist * direction), focal_point=tuple(centre), view_up=(0.0, 1.0, 0.0),
-                  view_angle=view_angle)
-
-
-def shape_scene(spec: str) -> Scene:
-    """A scene of one built-in shape: grey-blue material, default camera, one headlight."""
-    name, params = parse_shape_spec(spec)
-    mesh = make_shape(name, params, where=lambda m: SceneError(f"{spec}: {m}"))
-    return framed_scene(mesh, name, spec)
-
-
-def framed_scene(mesh: Mesh, name: str, source: str, inputs: tuple[str, ...] = ()) -> Scene:
-    """One mesh as a scene, the way a built-in shape or a mesh file given as SCENE is shown:
-    grey-blue material (ambient 0.1, diffuse 0.8, specular 0.3, power 20), flat shading,
-    :func:`default_camera` around it, one headlight, 512×384 on white."""
-    mat = Material(color=quantise_colour((0.6, 0.7, 0.9)), ambient=0.1, diffuse=0.8, specular=0.3,
-                   specular_power=20.0)
-    obj = SceneObject(mesh=mesh, material=mat, name=name)
-    cam = default_camera(obj.world_bounds())
-    return Scene(image=Image(), camera=cam, lights=(headlight(),), objects=(obj,), source=source, inputs=inputs)
-
-
 # --------------------------------------------------------------------------- entry point
 def load_scene(path_or_name, allow_large: bool = False) -> Scene:
     """Load a scene file (TOML), a preset name from ``lab/scenes``, a shape spec, or a
-    mesh file (any other existing file: :func:`lab.mesh_scene.mesh_file_scene`).
+    mesh file (any other existing file: :func:`lab.framing.mesh_file_scene`).
 
     ``allow_large`` lifts the image size limit (MAX_SIZE × MAX_SIZE pixels).
 
@@ -377,7 +301,6 @@ def load_scene(path_or_name, allow_large: bool = False) -> Scene:
             raise SceneError(f"{text if len(text) <= 200 else text[:199] + '…'}: no such scene file, preset or shape"
                              f"{hint} (shapes: {', '.join(shapes.SHAPES)}; presets: `scanlab scenes`)")
         elif file_problem(path) in (None, IS_A_FOLDER):
-            from lab.mesh_scene import mesh_file_scene  # same floor; it builds on this module
 
             return mesh_file_scene(path)
     problem = file_problem(path)

@@ -63,7 +63,8 @@ def interpolation_figure(out: Path) -> dict:
 
 def gouraud_vs_vtk_figure(out: Path) -> dict:
     """Write ``gouraud-vs-vtk.png`` (textbook sphere, OpenGL Gouraud vs VTK native)."""
-    from compare.report import OUTPUT_FILES, compare_scene
+    from compare.comparison import compare_scene
+    from compare.report import OUTPUT_FILES
 
     scene = load_scene("textbook-sphere").with_overrides(model="opengl", shading="gouraud")
     work = Path(tempfile.mkdtemp(dir=out, prefix=".gouraud-vs-vtk."))  # new, so everything in it is ours

@@ -14,7 +14,7 @@ import re
 import sys
 from pathlib import Path
 
-from lab.app import lessons_site
+from lab.app.lesson_site import build as lessons_site
 from lab.app.demo import scene_name
 from lab.app.exercises.command import add_parser as add_exercise_parser
 from lab.app.live import live_command

@@ -17,7 +17,7 @@ import pyvista as pv
 import vtk
 
 from lab import shapes
-from lab.loading import make_shape
+from lab.framing import make_shape
 from lab.measure import enclosed_volume, surface_area
 from lab.mesh import Mesh, fan_triangles
 from lab.meshfiles import MeshFileError, read_mesh, write_mesh

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-from lab.loading import quantise_colour
+from lab.validation import quantise_colour
 from lab.scene import Light, headlight
 
 

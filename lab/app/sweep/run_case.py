@@ -2,7 +2,7 @@
 
 :func:`run_one_case` is the only place a sweep calls the comparison (scanlab's render,
 VTK's render, the ΔE2000 metrics and the verdict against the parity bars); it builds the
-same ``metrics.json`` dict as ``scanlab compare`` (:func:`compare.report.compare_scene`), but
+same ``metrics.json`` dict as ``scanlab compare`` (:func:`compare.comparison.compare_scene`), but
 writes nothing: the frames travel back to the sweep, which keeps those of the worst cases.
 
 :func:`execute` wraps it for one request from the sweep: it loads the source (the last few

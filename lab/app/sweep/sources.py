@@ -15,8 +15,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from lab import shapes
-from lab.loading import SceneError, load_scene, parse_shape_spec
-from lab.mesh_scene import mesh_file_scene
+from lab.framing import parse_shape_spec
+from lab.loading import SceneError, load_scene
+from lab.framing import mesh_file_scene
 from lab.presets import preset_names
 from lab.scene import Scene
 
@@ -79,6 +80,6 @@ def find_sources(texts: list[str]) -> list[Source]:
 
 def load_source(kind: str, key: str) -> Scene:
     """The scene of a source (in the case's process): a scene file, preset or shape through
-    :func:`lab.loading.load_scene`, a mesh file through :func:`lab.mesh_scene.mesh_file_scene`
+    :func:`lab.loading.load_scene`, a mesh file through :func:`lab.framing.mesh_file_scene`
     (framed and lit as a built-in shape is, as ``scanlab compare`` shows it)."""
     return mesh_file_scene(key) if kind == "mesh" else load_scene(key)

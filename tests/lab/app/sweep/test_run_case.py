@@ -7,7 +7,7 @@ import json
 import numpy as np
 import pytest
 
-from compare.report import compare_scene
+from compare.comparison import compare_scene
 from lab.app.sweep.run_case import execute, run_one_case
 from lab.loading import load_scene
 

@@ -45,7 +45,7 @@ def test_an_empty_folder_is_refused(tmp_path):
 
 
 def test_a_mesh_source_is_the_scene_scanlab_compare_makes_of_the_file():
-    """The sweep frames a mesh file as `scanlab compare FILE` does (lab.mesh_scene), a built-in shape's way."""
+    """The sweep frames a mesh file as `scanlab compare FILE` does (lab.framing), a built-in shape's way."""
     scene, shape = load_source("mesh", str(TORUS)), load_scene("cube")
     assert scene.objects[0].material == shape.objects[0].material and scene.lights == shape.lights
     assert scene.objects[0].mesh.n_triangles == load_scene("torus-mesh").objects[0].mesh.n_triangles

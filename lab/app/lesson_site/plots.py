@@ -10,7 +10,7 @@ In a lesson::
     ```
 
 Each kind is one function in :data:`PLOTS` taking the figure specs and the axes to draw
-on; it measures through :func:`lessons.site.measurement.measure_figure` like every figure.
+on; it measures through :func:`lab.app.lesson_site.measurement.measure_figure` like every figure.
 matplotlib's object-oriented API only (a ``Figure`` of its own, no pyplot state); the
 labels are in the page's language (Japanese with the IPAex Gothic font), so a plot is
 cached once per language. The PNG bytes depend only on the data and the matplotlib
@@ -26,10 +26,10 @@ from docutils import nodes
 from docutils.parsers.rst import directives
 from sphinx.util.docutils import SphinxDirective
 
-from lessons.site import record
-from lessons.site.cache import cached, figure_key, source_files
-from lessons.site.i18n import _
-from lessons.site.measurement import FigureSpec, load, measure_figure
+from lab.app.lesson_site import record
+from lab.app.lesson_site.cache import cached, figure_key, source_files
+from lab.app.lesson_site.i18n import _
+from lab.app.lesson_site.measurement import FigureSpec, load, measure_figure
 
 PLOTS: dict = {}
 """Plot kinds by name: ``fn(specs, ax, font, lang) -> None`` (``lang`` "en" or "ja")."""
@@ -55,7 +55,7 @@ def mach_bands(specs: list[FigureSpec], ax, font, lang: str) -> None:
 
     Across flat facets L* climbs in steps; the eye sees a bright and a dark band at each
     step (Mach bands). Gouraud's curve has no steps, only kinks at the edges."""
-    from lessons.site.figure import shading_label
+    from lab.app.lesson_site.figure import shading_label
 
     for spec, colour in zip(specs, ("tab:orange", "tab:blue", "tab:green")):
         m = measure_figure(spec)
@@ -94,7 +94,7 @@ def draw(kind: str, specs: list[FigureSpec], path: Path, japanese: bool) -> None
     from matplotlib.font_manager import FontProperties
 
     from lab.atomic import atomic_file
-    from lessons.site.assets import japanese_font
+    from lab.app.lesson_site.assets import japanese_font
 
     font = FontProperties(fname=str(japanese_font())) if japanese else FontProperties()
     fig = Figure(figsize=(7.2, 3.6), dpi=100, layout="constrained")

@@ -1,4 +1,4 @@
-"""lab/mesh_scene.py: a mesh file given where a scene is expected is framed like a built-in shape."""
+"""lab/framing.py: a mesh file given where a scene is expected is framed like a built-in shape."""
 import numpy as np
 import pytest
 

@@ -1,7 +1,7 @@
-"""lessons/site/record.py: what pages note survives parallel reading and is forgotten on re-reading."""
+"""lab/app/lesson_site/record.py: what pages note survives parallel reading and is forgotten on re-reading."""
 from types import SimpleNamespace
 
-from lessons.site import record
+from lab.app.lesson_site import record
 
 
 def test_notes_are_merged_from_other_processes_and_purged_per_page():

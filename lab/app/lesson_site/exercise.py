@@ -12,7 +12,7 @@ from __future__ import annotations
 from docutils import nodes
 from sphinx.util.docutils import SphinxDirective
 
-from lessons.site.i18n import _
+from lab.app.lesson_site.i18n import _
 
 
 def _lang(config) -> str:

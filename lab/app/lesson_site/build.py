@@ -11,7 +11,7 @@ Runs Sphinx on ``lessons/`` once per language (English from the sources, Japanes
 Figures are drawn by both renderers while pages are read and cached under ``CACHE``
 (by default ``OUT/.build``, with Sphinx's own build state), so a second build draws
 nothing that has not changed. The build fails (exit 1) if a figure that should pass the
-parity bars does not, or a "break it" figure passes them (:mod:`lessons.site.pages`),
+parity bars does not, or a "break it" figure passes them (:mod:`lab.app.lesson_site.pages`),
 and on any Sphinx warning (a broken link, a bad directive): a lesson site with a hole in
 it is not published.
 """
@@ -25,13 +25,16 @@ import sys
 import time
 from pathlib import Path
 
-LESSONS = Path(__file__).resolve().parents[2] / "lessons"
+from lab.app.lesson_site.places import LESSONS
+
 LANGUAGES = ("en", "ja")
 NAMES = {"en": "English", "ja": "日本語"}
 
 _ANSI = re.compile(r"\x1b\[[0-9;]*m")
-_STEP = re.compile(r"^(reading sources|writing output)\.\.\. \[\s*(\d+)%\] (?!\S*LC_MESSAGES)", re.M)
-"""Sphinx's progress lines (not those of compiling the .po catalogs, which also say "writing output")."""
+_STEP = re.compile(r"^(reading sources|writing output)\.\.\. \[\s*(\d+)%\] ", re.M)
+"""Sphinx's progress lines. Compiling the .po catalogs also says "writing output", before the
+HTML build starts (and the catalog's name comes in a write of its own): such lines are
+skipped until "building [html]" has been seen."""
 
 
 class BuildFailed(Exception):
@@ -50,17 +53,18 @@ class Progress:
 
     def __init__(self, languages: tuple[str, ...], stream=sys.stdout):
         self.languages, self.stream = languages, stream
-        self.index, self.fraction, self.started = 0, 0.0, time.perf_counter()
+        self.index, self.fraction, self.started, self.html = 0, 0.0, time.perf_counter(), False
         self.log: list[str] = []
 
     def start(self, i: int) -> None:
-        self.index, self.fraction = i, 0.0
+        self.index, self.fraction, self.html = i, 0.0, False
         self.draw("starting")
 
     def write(self, text: str) -> int:
         text = _ANSI.sub("", text)
         self.log.append(text)
-        for phase, pct in _STEP.findall(text):
+        self.html = self.html or "building [html]" in text
+        for phase, pct in _STEP.findall(text) if self.html else ():
             self.fraction = (0.8 if phase == "reading sources" else 0.2) * int(pct) / 100 + \
                 (0.8 if phase == "writing output" else 0.0)
             self.draw(phase.split()[0])
@@ -120,7 +124,7 @@ def build_language(lang: str, out: Path, cache: Path, jobs: int, progress: Progr
     from sphinx.util import console
     from sphinx.util.docutils import docutils_namespace, patch_docutils
 
-    from lessons.site.pages import FigureCheckError, figure_keys
+    from lab.app.lesson_site.pages import FigureCheckError, figure_keys
 
     console.nocolor()
     warnings = io.StringIO()
@@ -152,7 +156,7 @@ def build_site(out: Path, languages: tuple[str, ...] = LANGUAGES, cache: Path | 
 
     ``source`` is the Sphinx project (``lessons/``; the tests build small ones of their own)."""
     from lab.atomic import write_text
-    from lessons.site.cache import prune
+    from lab.app.lesson_site.cache import prune
 
     cache = cache or out / ".build"
     progress = Progress(languages, stream)
@@ -172,7 +176,7 @@ def build_site(out: Path, languages: tuple[str, ...] = LANGUAGES, cache: Path | 
 
 # ------------------------------------------------------------------ the command line
 def cmd_build(args) -> int:
-    from lessons.site.assets import AssetError
+    from lab.app.lesson_site.assets import AssetError
 
     out = Path(args.out)
     if out.exists() and not out.is_dir():
@@ -196,8 +200,8 @@ def cmd_build(args) -> int:
 def cmd_measure(args) -> int:
     """Measure one figure as a lesson page does and write its images and metrics."""
     from compare.report import write_json
-    from lessons.site.figure_images import write_figure_images
-    from lessons.site.measurement import FigureSpec, measure_figure, verdict
+    from lab.app.lesson_site.figure_images import write_figure_images
+    from lab.app.lesson_site.measurement import FigureSpec, measure_figure, verdict
 
     spec = FigureSpec(args.scene, args.shading, args.model, args.breakage, args.reference)
     out = Path(args.out)

@@ -1,7 +1,7 @@
-"""lessons/site/search.py: the course's compound terms stay whole words in the Japanese index."""
+"""lab/app/lesson_site/search.py: the course's compound terms stay whole words in the Japanese index."""
 from janome.tokenizer import Tokenizer
 
-from lessons.site.search import course_terms, search_options, user_dictionary
+from lab.app.lesson_site.search import course_terms, search_options, user_dictionary
 
 
 def test_without_the_terms_janome_cuts_them_up():

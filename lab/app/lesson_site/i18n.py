@@ -11,8 +11,10 @@ from pathlib import Path
 
 from sphinx.locale import get_translation
 
+from lab.app.lesson_site.places import LOCALES
+
 CATALOG = "scanlab"
-LOCALE_DIR = Path(__file__).resolve().parents[1] / "locales"
+LOCALE_DIR = LOCALES
 """``lessons/locales``: the Japanese .po files of the pages and of :data:`CATALOG`."""
 
 _translate = get_translation(CATALOG)

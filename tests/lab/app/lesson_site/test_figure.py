@@ -1,6 +1,6 @@
-"""lessons/site/figure.py: variant labels name only what differs, in the page's language."""
+"""lab/app/lesson_site/figure.py: variant labels name only what differs, in the page's language."""
 from lab.loading import load_scene
-from lessons.site.figure import AXES, describe, variant_labels
+from lab.app.lesson_site.figure import AXES, describe, variant_labels
 
 
 def test_labels_name_only_the_axes_that_differ():

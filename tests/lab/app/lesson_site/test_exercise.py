@@ -1,9 +1,10 @@
-"""lessons/site/exercise.py: an exercise's page is built from the exercise registry, in the page's language."""
+"""lab/app/lesson_site/exercise.py: an exercise's page is built from the exercise registry, in the page's language."""
 import pytest
 from docutils import nodes
 
 from lab.app.exercises.exercise_registry import exercises
-from lessons.site import exercise
+from lab.app.lesson_site import exercise
+from lab.app.lesson_site.places import LESSONS
 
 
 class _Config:
@@ -18,9 +19,7 @@ def test_the_language_is_read_from_the_config(language, lang):
 
 def test_every_exercise_page_has_a_directive_page_in_the_site():
     """lessons/exercises/<name>.md exists for every registered exercise, and names it."""
-    from pathlib import Path
-
-    folder = Path(exercise.__file__).resolve().parents[1] / "exercises"
+    folder = LESSONS / "exercises"
     for name in exercises():
         assert (folder / f"{name}.md").read_text().strip() == f"```{{scanlab-exercise}} {name}\n```"
         assert f"\n{name}\n" in (folder / "index.md").read_text()

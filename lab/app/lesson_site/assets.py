@@ -17,7 +17,7 @@ import shutil
 import subprocess
 from pathlib import Path
 
-LESSONS = Path(__file__).resolve().parents[1]
+from lab.app.lesson_site.places import LESSONS
 NODE_MODULES = LESSONS / "node_modules"
 MATHJAX = NODE_MODULES / "mathjax"
 MATHJAX_FILES = ("es5/tex-chtml.js", "es5/output/chtml/fonts")

@@ -20,11 +20,11 @@ from pathlib import Path
 from typing import Callable
 
 from lab.atomic import write_text
+from lab.app.lesson_site.places import ROOT
 
 FORMAT = 1
 """Bumped when the layout of an entry changes."""
 
-ROOT = Path(__file__).resolve().parents[2]
 """The repository root (renderer/, compare/ and lessons/ sit in it)."""
 
 RESULT = "result.json"

@@ -1,7 +1,7 @@
-"""lessons/site/cache.py: a figure is drawn once per version of what decides its pixels."""
+"""lab/app/lesson_site/cache.py: a figure is drawn once per version of what decides its pixels."""
 from __future__ import annotations
 
-from lessons.site.cache import cached, figure_key, prune, source_files, sources_hash
+from lab.app.lesson_site.cache import cached, figure_key, prune, source_files, sources_hash
 
 
 def test_the_key_changes_with_the_files_and_the_options(tmp_path):
@@ -16,7 +16,7 @@ def test_the_key_changes_with_the_files_and_the_options(tmp_path):
 
 def test_the_sources_hash_covers_renderer_compare_and_the_site():
     names = {p.parent.name for p in source_files()}
-    assert {"renderer", "compare", "site"} <= names and len(sources_hash()) == 16
+    assert {"renderer", "compare", "lesson_site"} <= names and len(sources_hash()) == 16
 
 
 def test_an_entry_is_made_once_and_found_again(tmp_path):

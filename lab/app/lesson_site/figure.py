@@ -18,12 +18,12 @@ buffers; ``:expect: fail`` says the figure is meant to differ from VTK (a "break
 figure or a native reference implies it). Each variant shows ours | VTK | the ΔE2000 map with its colour bar, a wipe
 slider that lays ours over VTK's, the metrics and verdict, the scene file and the
 command that reproduces it. All words are generated in the page's language
-(:mod:`lessons.site.i18n`); the images carry none.
+(:mod:`lab.app.lesson_site.i18n`); the images carry none.
 
-Every variant is measured (:func:`lessons.site.measurement.measure_figure`) and cached
-(:mod:`lessons.site.cache`). A variant whose verdict is not the one the lesson promises
+Every variant is measured (:func:`lab.app.lesson_site.measurement.measure_figure`) and cached
+(:mod:`lab.app.lesson_site.cache`). A variant whose verdict is not the one the lesson promises
 (a passing figure outside the bars, a "break it" figure inside them) is recorded, and
-the build fails (:mod:`lessons.site.pages`).
+the build fails (:mod:`lab.app.lesson_site.pages`).
 """
 from __future__ import annotations
 
@@ -34,11 +34,11 @@ from docutils import nodes
 from docutils.parsers.rst import directives
 from sphinx.util.docutils import SphinxDirective
 
-from lessons.site import record
-from lessons.site.cache import ROOT, cached, figure_key, source_files
-from lessons.site.i18n import _
-from lessons.site.figure_images import DEPTH_VMAX_LSB, colour_bar_stops, depth_metrics, write_figure_images
-from lessons.site.measurement import EXPECTATIONS, FigureSpec, as_expected, command, load, measure_figure, verdict
+from lab.app.lesson_site import record
+from lab.app.lesson_site.cache import ROOT, cached, figure_key, source_files
+from lab.app.lesson_site.i18n import _
+from lab.app.lesson_site.figure_images import DEPTH_VMAX_LSB, colour_bar_stops, depth_metrics, write_figure_images
+from lab.app.lesson_site.measurement import EXPECTATIONS, FigureSpec, as_expected, command, load, measure_figure, verdict
 
 
 def shading_label(name: str) -> str:

@@ -2,7 +2,7 @@
 
 Words on a page are translated; words burnt into a PNG are not. So the figure images
 here carry no labels: the panel titles, the colour bar's ticks and the legend are HTML
-around them, in the page's language (:mod:`lessons.site.figure`). The colours are those
+around them, in the page's language (:mod:`lab.app.lesson_site.figure`). The colours are those
 of the comparison run's panels (:mod:`compare.images`: viridis from 0 to ``VMAX``,
 magenta where only one renderer drew, light grey where neither did), so a student who
 has seen ``scanlab compare``'s output reads these the same way.
@@ -55,7 +55,7 @@ def depth_grey(depth: np.ndarray, coverage: np.ndarray, lo: float, hi: float) ->
 
 
 def write_figure_images(m, folder: Path, depth: bool = False) -> list[str]:
-    """Write a :class:`lessons.site.measurement.Measurement` as PNGs into ``folder``; return their names.
+    """Write a :class:`lab.app.lesson_site.measurement.Measurement` as PNGs into ``folder``; return their names.
 
     ``ours.png`` and ``vtk.png`` (the two frames), ``delta_e.png`` (ΔE2000 heat map on
     0..``VMAX``); with ``depth``, also ``depth-ours.png``, ``depth-vtk.png`` (both on one

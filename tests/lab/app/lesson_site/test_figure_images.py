@@ -1,12 +1,12 @@
-"""lessons/site/figure_images.py: text-free figure images in the comparison run's colours."""
+"""lab/app/lesson_site/figure_images.py: text-free figure images in the comparison run's colours."""
 from __future__ import annotations
 
 import numpy as np
 from PIL import Image
 
 from lab.frame import Frame
-from lessons.site.figure_images import colour_bar_stops, depth_grey, heat_map, write_figure_images
-from lessons.site.measurement import Measurement
+from lab.app.lesson_site.figure_images import colour_bar_stops, depth_grey, heat_map, write_figure_images
+from lab.app.lesson_site.measurement import Measurement
 
 
 def test_the_heat_map_uses_viridis_magenta_and_grey():

@@ -1,11 +1,11 @@
-"""The lesson site's Sphinx extension (``extensions = ["lessons.site"]`` in ``lessons/conf.py``).
+"""The lesson site's Sphinx extension (``extensions = ["lab.app.lesson_site"]`` in ``lessons/conf.py``).
 
-It adds the ``scanlab-figure`` directive (:mod:`lessons.site.figure`: both renderers at
-build time, measured, cached), the ``scanlab-plot`` directive (:mod:`lessons.site.plots`), the ``scanlab-exercise``
-directive (:mod:`lessons.site.exercise`: an exercise's page from the exercise registry),
+It adds the ``scanlab-figure`` directive (:mod:`lab.app.lesson_site.figure`: both renderers at
+build time, measured, cached), the ``scanlab-plot`` directive (:mod:`lab.app.lesson_site.plots`), the ``scanlab-exercise``
+directive (:mod:`lab.app.lesson_site.exercise`: an exercise's page from the exercise registry),
 the ``{src}`` role that names (and checks) the code and tests a lesson teaches
-(:mod:`lessons.site.code`), the words the directives generate in each language (:mod:`lessons.site.i18n`), and the build-wide
-steps of :mod:`lessons.site.pages` (language switch, Japanese search, offline MathJax,
+(:mod:`lab.app.lesson_site.code`), the words the directives generate in each language (:mod:`lab.app.lesson_site.i18n`), and the build-wide
+steps of :mod:`lab.app.lesson_site.pages` (language switch, Japanese search, offline MathJax,
 the check that every figure keeps its lesson's promise). Reading pages is parallel-safe:
 ``sphinx-build -j 2`` draws figures on both cores.
 
@@ -14,7 +14,7 @@ Importing this package loads nothing heavy; Sphinx calls :func:`setup`.
 
 
 def setup(app):
-    from lessons.site import code, exercise, figure, i18n, pages, plots, record
+    from lab.app.lesson_site import code, exercise, figure, i18n, pages, plots, record
 
     app.add_config_value("scanlab_figure_cache", "", "env", types=[str])
     i18n.setup_catalog(app)

@@ -94,17 +94,23 @@ def measure_figure(spec: FigureSpec) -> Measurement:
     return Measurement(ours, ref, de, shared, mismatch, metrics)
 
 
+def judged(metrics: dict, expect: str):
+    """The comparison run's verdict (:class:`compare.verdict.Verdict`) on a figure's metrics;
+    a figure expected to fail is judged as a scene meant to fail."""
+    from compare.verdict import Verdict
+
+    why = "the lesson breaks a rule, or contrasts two models, on purpose" if expect == "fail" else None
+    return Verdict(failed=tuple(metrics["failed_bars"]), meant_to_fail=why)
+
+
 def verdict(metrics: dict, expect: str) -> str:
     """"pass" (passes, as it should), "fails as meant", or the surprise: "FAIL" / "PASSES?"."""
-    passed = not metrics["failed_bars"]
-    if expect == "fail":
-        return "PASSES?" if passed else "fails as meant"
-    return "pass" if passed else "FAIL"
+    return judged(metrics, expect).status
 
 
 def as_expected(metrics: dict, expect: str) -> bool:
-    """Whether a figure's verdict is the one the lesson promises."""
-    return verdict(metrics, expect) in ("pass", "fails as meant")
+    """Whether a figure's verdict is the one the lesson promises (``Verdict.ok``)."""
+    return judged(metrics, expect).ok
 
 
 def command(spec: FigureSpec, root: Path, out: str = "out/figure") -> str:

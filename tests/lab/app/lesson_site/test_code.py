@@ -1,5 +1,5 @@
-"""lessons/site/code.py: a lesson can only name code and tests that exist."""
-from lessons.site.code import problem
+"""lab/app/lesson_site/code.py: a lesson can only name code and tests that exist."""
+from lab.app.lesson_site.code import problem
 
 
 def test_existing_files_and_definitions_are_accepted():

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from docutils import nodes
 
-ROOT = Path(__file__).resolve().parents[2]
+from lab.app.lesson_site.places import ROOT
 
 
 def problem(target: str, root: Path = ROOT) -> str | None:

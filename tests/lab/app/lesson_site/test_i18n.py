@@ -1,13 +1,14 @@
-"""lessons/site/i18n.py and the Japanese catalogs: every word the site shows has its Japanese."""
+"""lab/app/lesson_site/i18n.py and the Japanese catalogs: every word the site shows has its Japanese."""
 import ast
 import re
 from pathlib import Path
 
 from babel.messages.pofile import read_po
 
-from lessons.site.i18n import LOCALE_DIR, compile_catalog
+from lab.app.lesson_site import i18n
+from lab.app.lesson_site.i18n import LOCALE_DIR, compile_catalog
 
-SITE = Path(__file__).resolve().parents[3] / "lessons" / "site"
+SITE = Path(i18n.__file__).resolve().parent
 CATALOGS = LOCALE_DIR / "ja" / "LC_MESSAGES"
 
 

@@ -1,11 +1,10 @@
-"""lessons/site/measurement.py: one measurement per figure, VTK always intact, the verdict a lesson promises."""
+"""lab/app/lesson_site/measurement.py: one measurement per figure, VTK always intact, the verdict a lesson promises."""
 from __future__ import annotations
 
-from pathlib import Path
 
-from lessons.site.measurement import FigureSpec, as_expected, command, measure_figure, verdict
+from lab.app.lesson_site.measurement import FigureSpec, as_expected, command, measure_figure, verdict
+from lab.app.lesson_site.places import ROOT
 
-ROOT = Path(__file__).resolve().parents[3]
 FILL_RULE = str(ROOT / "lessons" / "05-scanline" / "fill-rule.toml")
 
 

@@ -1,7 +1,7 @@
-"""lessons/site/assets.py: MathJax from the pinned npm package, the Japanese font from PyPI, nothing else."""
+"""lab/app/lesson_site/assets.py: MathJax from the pinned npm package, the Japanese font from PyPI, nothing else."""
 import json
 
-from lessons.site.assets import LESSONS, japanese_font, locked_mathjax_version, static_folder
+from lab.app.lesson_site.assets import LESSONS, japanese_font, locked_mathjax_version, static_folder
 
 
 def test_mathjax_is_pinned_to_version_3():

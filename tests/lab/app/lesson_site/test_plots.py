@@ -1,10 +1,9 @@
-"""lessons/site/plots.py: plots from measured renders, the same bytes every time, labels in each language."""
-from pathlib import Path
+"""lab/app/lesson_site/plots.py: plots from measured renders, the same bytes every time, labels in each language."""
 
-from lessons.site.measurement import FigureSpec
-from lessons.site.plots import PLOTS, draw
+from lab.app.lesson_site.measurement import FigureSpec
+from lab.app.lesson_site.places import ROOT
+from lab.app.lesson_site.plots import PLOTS, draw
 
-ROOT = Path(__file__).resolve().parents[3]
 SPHERE = str(ROOT / "lessons" / "09-shading" / "sphere-2.toml")
 
 

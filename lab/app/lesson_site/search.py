@@ -12,7 +12,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-TERMS = Path(__file__).resolve().parents[1] / "locales" / "ja" / "search-terms.txt"
+from lab.app.lesson_site.places import LOCALES
+
+TERMS = LOCALES / "ja" / "search-terms.txt"
 
 NOUN_ID = 1285
 """IPADIC's context id of a common noun (名詞,一般)."""

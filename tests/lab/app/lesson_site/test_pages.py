@@ -1,10 +1,10 @@
-"""lessons/site/pages.py: the language switch, and the check that stops a build."""
+"""lab/app/lesson_site/pages.py: the language switch, and the check that stops a build."""
 from types import SimpleNamespace
 
 import pytest
 
-from lessons.site import record
-from lessons.site.pages import FigureCheckError, on_env_updated, on_html_page_context
+from lab.app.lesson_site import record
+from lab.app.lesson_site.pages import FigureCheckError, on_env_updated, on_html_page_context
 
 
 @pytest.mark.parametrize("language, pagename, href", [

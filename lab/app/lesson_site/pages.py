@@ -1,8 +1,8 @@
 """Build-wide steps of the lesson site: language settings, the language switch, checks, copies.
 
 - ``config-inited``: Japanese pages get a Japanese site title and index their text with
-  Janome and the course's terms (:mod:`lessons.site.search`).
-- ``builder-inited``: MathJax and a Japanese font join the static files (:mod:`lessons.site.assets`);
+  Janome and the course's terms (:mod:`lab.app.lesson_site.search`).
+- ``builder-inited``: MathJax and a Japanese font join the static files (:mod:`lab.app.lesson_site.assets`);
   English pages need the font too, for the link to the Japanese ones.
 - ``html-page-context``: every page gets a link to the same page in the other language
   (the site is published as ``en/`` and ``ja/`` side by side).
@@ -17,9 +17,9 @@ from pathlib import Path
 
 from sphinx.errors import SphinxError
 
-from lessons.site import record
-from lessons.site.assets import copy_file, static_folder
-from lessons.site.search import TERMS, search_options
+from lab.app.lesson_site import record
+from lab.app.lesson_site.assets import copy_file, static_folder
+from lab.app.lesson_site.search import TERMS, search_options
 
 LANGUAGES = {"en": "English", "ja": "日本語"}
 
