@@ -18,13 +18,13 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-import lessons
+from lab.app.lesson_site.places import LESSONS as LESSONS_DIR
+from lab.framing import parse_shape_spec
 from lab.loading import load_scene
 from lab.presets import preset_description, preset_names, preset_path
 from lab.shapes import SHAPES, shape_parameters
 from lab.validation import SceneError
 
-LESSONS_DIR = Path(lessons.__file__).parent
 GROUPS = ("preset", "lesson", "shape", "file", "saved")
 """The kinds of entry, in the picker's order."""
 
@@ -145,8 +145,6 @@ def shape_defaults(name: str) -> dict:
 
 def initial_parameters(spec: str) -> dict:
     """The parameters of a shape spec given on the command line, over the defaults."""
-    from lab.loading import parse_shape_spec
-
     name, params = parse_shape_spec(spec)
     return {**shape_defaults(name), **params}
 

@@ -10,7 +10,7 @@ with :func:`lab.app.live.controls.to_render` (the one edge) and draws:
 - :func:`measure`: the comparison run of ``scanlab compare``
   (:func:`compare.comparison.run_comparison`, VTK drawing the intact scene, our side
   broken if asked), VTK's image, the ΔE2000 map in the colours of the comparison panels
-  (:func:`lessons.site.figure_images.heat_map`), the ``metrics.json`` figures and the
+  (:func:`lab.app.lesson_site.figure_images.heat_map`), the ``metrics.json`` figures and the
   verdict; with ``stages``, the stage views of ``scanlab stages`` as well.
 
 With a rule broken on purpose the verdict is judged as a scene meant to fail: "fails as
@@ -64,7 +64,7 @@ def measure(job: Job) -> dict:
     from compare.comparison import run_comparison
     from compare.metrics import coverage_masks
     from compare.verdict import judge
-    from lessons.site.figure_images import heat_map
+    from lab.app.lesson_site.figure_images import heat_map
     from renderer.breakages import BREAKAGES
 
     t0 = time.perf_counter()

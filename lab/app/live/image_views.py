@@ -12,7 +12,7 @@ from __future__ import annotations
 from trame.widgets import html
 from trame.widgets import vuetify3 as v
 
-from lessons.site.figure_images import colour_bar_stops
+from lab.app.lesson_site.figure_images import colour_bar_stops
 
 METRIC_ROWS = ("mean", "p999", "max", "pixels_over_1", "coverage_mismatch", "max_channel_diff", "depth", "reference")
 """The figures under the images, in order (keys of the state's ``metrics_view``)."""
