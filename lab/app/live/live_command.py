@@ -63,7 +63,18 @@ def _check_address(host: str, port: int, usage_error) -> None:
                               "(try another --port, or --port 0 for any free one)") from None
 
 
+def _check_trame(usage_error) -> None:
+    """trame is an extra (``live``): say how to install it rather than fail on an import."""
+    try:
+        import trame.app  # noqa: F401
+        import trame.widgets.vuetify3  # noqa: F401
+    except ImportError as exc:
+        raise usage_error(f"the live lab needs trame and trame-vuetify ({exc.name} is missing): "
+                          "pip install -e '.[live]' in scanlab's folder (make venv does it)") from None
+
+
 def cmd_app(args, usage_error) -> int:
+    _check_trame(usage_error)
     from lab.app.live.live_server import run
 
     save_dir = Path(args.save_dir)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import signal
 import socket
+import sys
 import urllib.request
 
 import pytest
@@ -24,6 +25,13 @@ def test_a_bad_option_is_one_line_and_exit_status_2(capsys, args, message):
     assert main(["app", *args]) == 2
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_without_trame_it_says_how_to_install_it(capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "trame.widgets.vuetify3", None)  # an import of it fails
+    assert main(["app"]) == 2
+    err = capsys.readouterr().err
+    assert "needs trame and trame-vuetify" in err and "'.[live]'" in err and err.count("\n") == 1
 
 
 def test_a_port_in_use_is_named(capsys):
