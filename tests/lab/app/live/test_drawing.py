@@ -32,6 +32,16 @@ def test_our_image_is_the_renderers_image_of_the_controls():
     np.testing.assert_array_equal(_rgb(draw_ours(_job(shading="gouraud"))["png"]), render(scene).rgb)
 
 
+def test_our_image_shows_the_rule_broken():
+    from renderer import RenderOptions
+    from renderer.breakages import apply_breakage
+
+    scene = load_scene(SPEC).with_overrides(size=(256, 256))
+    broken = render(*apply_breakage("screen-interpolation", scene, RenderOptions())).rgb
+    assert not np.array_equal(broken, render(scene).rgb)
+    np.testing.assert_array_equal(_rgb(draw_ours(_job(breakage="screen-interpolation"))["png"]), broken)
+
+
 def test_the_measurement_is_the_comparison_run_of_the_same_scene():
     scene = load_scene(SPEC).with_overrides(size=(256, 256))
     expected = run_comparison(scene, name=SPEC, timings=False)
