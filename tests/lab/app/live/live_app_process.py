@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import os
 import re
+import select
 import signal
 import subprocess
 import sys
@@ -21,13 +22,15 @@ def running_app(*args: str, cwd: Path | None = None, timeout: float = 120.0):
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                                env={**os.environ, "PYTHONUNBUFFERED": "1"})
     try:
-        line, t0 = "", time.monotonic()
+        line, printed, t0 = "", [], time.monotonic()
         while not ADDRESS.search(line):
+            left = timeout - (time.monotonic() - t0)
+            if left <= 0 or not select.select([process.stdout], [], [], left)[0]:
+                raise TimeoutError(f"scanlab app printed no loopback address in {timeout:.0f} s: {printed}")
             line = process.stdout.readline()
+            printed.append(line)
             if not line and process.poll() is not None:
                 raise RuntimeError(f"scanlab app ended: {process.stderr.read()}")
-            if time.monotonic() - t0 > timeout:
-                raise TimeoutError("scanlab app printed no address")
         match = ADDRESS.search(line)
         yield match.group(1), int(match.group(2)), process
     finally:
