@@ -218,8 +218,10 @@ def test_a_control_change_shows_our_new_image_within_100_ms(page, app, tmp_path)
 
 # --------------------------------------------------------------------------- words and pictures
 def test_the_page_switches_to_japanese_and_back(page, tmp_path):
-    pick_scene(page, "spot-attenuation")
-    settle(page)
+    """Screenshots in both languages of a rule broken on purpose (the README's picture)."""
+    change(page, lambda: pick_scene(page, "spot-attenuation"))
+    open_panel(page, "Break it")
+    change(page, lambda: page.click(".radio-breakage label:has-text('screen-linear')"))
     shots = {}
     for lang, button, word in (("en", ".lang-en", "scanlab live lab"), ("ja", ".lang-ja", "ライブラボ")):
         page.click(button)
@@ -228,6 +230,7 @@ def test_the_page_switches_to_japanese_and_back(page, tmp_path):
         page.screenshot(path=shots[lang])
     assert "判定" in page.inner_text(".metrics") and "鏡面反射光 Ks" in page.inner_text(".slider-specular")
     page.click(".lang-en")
+    change(page, lambda: page.click(".radio-breakage label:has-text('nothing broken')"))
     for path in shots.values():
         with Image.open(path) as image:
             assert len(image.convert("L").getcolors(1 << 16) or []) > 50, f"{path} looks blank"
