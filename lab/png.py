@@ -39,6 +39,6 @@ def png_bytes(rgb: np.ndarray, compress_level: int = 6) -> bytes:
     """An 8-bit RGB image (as :func:`write_png` takes it) as the bytes of a PNG file;
     ``compress_level`` 0..9 trades size for time (1 is several times faster than 6,
     for images sent once over a local connection)."""
-    buf = io.BytesIO()
-    _image(rgb).save(buf, format="PNG", compress_level=compress_level)
-    return buf.getvalue()
+    f = io.BytesIO()
+    _image(rgb).save(f, format="PNG", compress_level=compress_level)
+    return f.getvalue()

@@ -222,7 +222,7 @@ class LiveLab:
         """"Save scene": the scene on screen into the save folder, as the name field says."""
         try:
             checked = to_render(Controls.from_state(self.state), self.base)
-            saved = self.saver.save(checked.scene, self.state.save_name, checked.breakage)
+            saved = self.saver.write(checked.scene, self.state.save_name, checked.breakage)
         except Problems as found:
             self._set_problems({**self.problems, **found.found})
             return

@@ -44,7 +44,7 @@ class Saver:
             raise Problems({"save_name": Problem("name")})
         return self.folder / f"{name.strip().removesuffix('.toml')}.toml"
 
-    def save(self, scene, name, breakage: str = "") -> Saved:
+    def write(self, scene, name, breakage: str = "") -> Saved:
         """Write ``scene`` as ``name``; the path and the commands that reproduce what the page shows."""
         from lab.scene_writer import scene_files, write_scene
 
