@@ -10,7 +10,7 @@ OUT    ?= out/demo
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e '.[test,lessons]'
+	$(PY) -m pip install --quiet -e '.[test,lessons,live]'
 	@rm -f $(VENV)/.installed-* && touch $@
 
 venv: $(STAMP)

@@ -144,7 +144,7 @@ class Comparison:
 
 
 def run_comparison(scene, name: str | None = None, reference: str | None = None, bars: dict | None = None,
-                   stages: bool = False, timings: bool = True) -> Comparison:
+                   stages: bool = False, timings: bool = True, ours: tuple | None = None) -> Comparison:
     """Draw ``scene`` both ways, measure and judge it (nothing is written).
 
     Parameters
@@ -157,17 +157,21 @@ def run_comparison(scene, name: str | None = None, reference: str | None = None,
     stages : keep our stage buffers (:func:`renderer.render_stages`) for ``stages.png``.
     timings : time one warm frame of each renderer (``ours_ms``, ``reference_ms``; each
         side draws twice). Without, both keys are None.
+    ours : (scene, :class:`renderer.RenderOptions`) for our renderer instead of (``scene``,
+        the default options): a "break it" entry (:mod:`renderer.breakages`) breaks our side
+        only, while VTK draws ``scene`` intact.
     """
     from compare.reference import render_reference
-    from renderer import render, render_stages
+    from renderer import RenderOptions, render, render_stages
 
-    ours, kept = render_stages(scene) if stages else (None, None)
+    ours_scene, options = ours if ours is not None else (scene, RenderOptions())
+    ours, kept = render_stages(ours_scene, options) if stages else (None, None)
     ours_ms = None
     if timings:
-        frame, ours_ms = timed_render(scene)
+        frame, ours_ms = timed_render(ours_scene, options=options)
         ours = frame if ours is None else ours
     elif ours is None:
-        ours = render(scene)
+        ours = render(ours_scene, options)
     clock: dict = {}
     ref = render_reference(scene, timings=clock if timings else None, reference=reference)
     figures, de = compare_frames(ours, ref)

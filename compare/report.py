@@ -17,14 +17,16 @@ OUTPUT_FILES = ("ours.png", "vtk.png", "delta_e.png", "side_by_side.png", "metri
 """The files :func:`compare.comparison.compare_scene` writes into its folder (and ``stages.png`` with the stages)."""
 
 
-def timed_render(scene, warm: bool = True):
-    """scanlab's render of ``scene`` and its time in ms (a warm call: kernels loaded)."""
-    from renderer import render
+def timed_render(scene, warm: bool = True, options=None):
+    """scanlab's render of ``scene`` (with :class:`renderer.RenderOptions` ``options``, default
+    the defaults) and its time in ms (a warm call: kernels loaded)."""
+    from renderer import RenderOptions, render
 
+    options = RenderOptions() if options is None else options
     if warm:
-        render(scene)
+        render(scene, options)
     t0 = time.perf_counter()
-    frame = render(scene)
+    frame = render(scene, options)
     return frame, (time.perf_counter() - t0) * 1e3
 
 

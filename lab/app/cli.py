@@ -17,6 +17,7 @@ from pathlib import Path
 from lab.app.lesson_site import build as lessons_site
 from lab.app.demo import scene_name
 from lab.app.exercises.command import add_parser as add_exercise_parser
+from lab.app.live import live_command
 from lab.app.sweep import sweep_command
 from lab.loading import LARGE_SIZE, MAX_SIZE, SceneError, load_scene, size_problem
 from lab.presets import SCENES_DIR, preset_description, preset_names
@@ -463,6 +464,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_demo)
 
     sweep_command.add_parser(sub, UsageError)
+    live_command.add_parser(sub, UsageError)
     return parser
 
 

@@ -73,3 +73,16 @@ def test_the_settings_line_names_what_made_the_image():
 def test_anything_else_is_refused_with_a_type_error():
     with pytest.raises(TypeError, match="Scene, a scene name or file, or a PyVista Plotter"):
         compare.compare(42)
+
+
+def test_our_side_can_be_drawn_broken_while_vtk_draws_the_scene_intact():
+    from renderer import RenderOptions
+    from renderer.breakages import apply_breakage
+
+    scene = load_scene("course-phong")
+    scene = dataclasses.replace(scene, image=dataclasses.replace(scene.image, size=(160, 120)))
+    intact = run_comparison(scene, timings=False)
+    broken = run_comparison(scene, timings=False, ours=apply_breakage("face-normals", scene, RenderOptions()))
+    np.testing.assert_array_equal(broken.reference, intact.reference)
+    assert not np.array_equal(broken.ours, intact.ours)
+    assert broken.metrics["delta_e_2000"]["mean"] > intact.metrics["delta_e_2000"]["mean"]

@@ -1,11 +1,12 @@
 """lab/png.py: PNGs round-trip, refuse what is not 8-bit RGB, and are written atomically."""
+import io
 import os
 
 import numpy as np
 import pytest
 from PIL import Image
 
-from lab.png import write_png
+from lab.png import png_bytes, write_png
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
@@ -47,3 +48,14 @@ def test_interrupted_png_write_leaves_no_partial_file(tmp_path, monkeypatch, exi
     assert os.listdir(tmp_path) == (["a.png"] if existing else [])  # no temp file left
     if existing:
         assert target.read_bytes() == b"old"
+
+
+@pytest.mark.parametrize("level", [0, 1, 9])
+def test_png_bytes_are_the_same_image_at_any_compression(level):
+    rgb = np.random.default_rng(1).integers(0, 256, (5, 9, 3), dtype=np.uint8)
+    data = png_bytes(rgb, level)
+    assert data.startswith(PNG_SIGNATURE)
+    with Image.open(io.BytesIO(data)) as image:
+        np.testing.assert_array_equal(np.asarray(image.convert("RGB")), rgb)
+    with pytest.raises(TypeError):
+        png_bytes(rgb.astype(float), level)
