@@ -66,9 +66,13 @@ def _serve(conn, task: Callable, warm: Callable, nice: int = 0) -> None:
         os.nice(nice)
     try:
         warm()
-        conn.send(("ready", 0, None))
+        problem = None
     except Exception as exc:  # noqa: BLE001 -- reported to the page, the worker stays
-        conn.send(("ready", 0, _one_line(exc)))
+        problem = _one_line(exc)
+    try:
+        conn.send(("ready", 0, problem))
+    except OSError:  # the server closed the pipe while this worker warmed up: nothing to serve
+        return
     while True:
         try:
             job = conn.recv()

@@ -5,6 +5,7 @@ from __future__ import annotations
 import signal
 import socket
 import sys
+import time
 import urllib.request
 
 import pytest
@@ -59,7 +60,23 @@ def test_it_serves_on_loopback_only_and_ctrl_c_stops_it_with_its_workers(tmp_pat
         process.send_signal(signal.SIGINT)
         assert process.wait(20) == 0
         assert "Traceback" not in process.stderr.read()
-    assert not [pid for pid in workers if _alive(pid)]
+    assert _all_ended(workers, within=15.0) == {}
+
+
+def _all_ended(pids: list[int], within: float) -> dict[int, str]:
+    """Wait up to ``within`` seconds for ``pids`` to end; the command lines of those still alive."""
+    deadline = time.monotonic() + within
+    while (alive := [pid for pid in pids if _alive(pid)]) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    return {pid: _command_line(pid) for pid in alive}
+
+
+def _command_line(pid: int) -> str:
+    try:
+        with open(f"/proc/{pid}/cmdline") as f:
+            return f.read().replace("\0", " ").strip()
+    except OSError:
+        return "?"
 
 
 def _alive(pid: int) -> bool:
