@@ -89,11 +89,11 @@ def plane_normal(a, b, c, n):
         n[0], n[1], n[2] = n[0] / length, n[1] / length, n[2] / length
 
 
-@njit(cache=True)
+@njit(cache=True, parallel=True)
 def face_normals(verts, triangles, out):
     """:func:`plane_normal` of every triangle (T, 3) of ``verts`` into ``out`` (T, 3), once
     per frame: flat shading reads its triangle's, instead of working it out at every pixel."""
-    for t in range(triangles.shape[0]):
+    for t in prange(triangles.shape[0]):
         plane_normal(verts[triangles[t, 0]], verts[triangles[t, 1]], verts[triangles[t, 2]], out[t])
 
 
