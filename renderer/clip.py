@@ -115,7 +115,7 @@ def clip_one(verts_clip, triangles, t, poly, bary, tmp_poly, tmp_bary):
     return n
 
 
-def clip_triangles(verts_clip, triangles, ws=None):
+def clip_triangles(verts_clip, triangles, ws=None, trivial=True):
     """Clip triangles given as (N, 4) clip-space vertices and (T, 3) vertex indices.
 
     **Trivial reject and accept** (Cohen–Sutherland outcodes, :func:`outcode`): a
@@ -127,6 +127,8 @@ def clip_triangles(verts_clip, triangles, ws=None):
     Parameters
     ----------
     ws : renderer.workspace.Workspace, optional; the outputs then live in it.
+    trivial : False cuts every triangle against all six planes (the plain path the tests
+        compare the trivial accept and reject with: the same output).
 
     Returns
     -------
@@ -139,25 +141,26 @@ def clip_triangles(verts_clip, triangles, ws=None):
     codes = empty(ws, "clip.codes", len(verts_clip), np.int64)
     outcodes(verts_clip, codes)
     counts = empty(ws, "clip.counts", len(triangles) + 1, np.int64)
-    count_pieces(verts_clip, triangles, codes, counts[1:])
+    count_pieces(verts_clip, triangles, codes, bool(trivial), counts[1:])
     counts[0] = 0
     offsets = np.cumsum(counts, out=counts)
     k = int(offsets[-1])
     out_clip = empty(ws, "clip.clip", (k, 3, 4))
     out_bary = empty(ws, "clip.bary", (k, 3, 3))
     out_source = empty(ws, "clip.source", k, np.int64)
-    write_pieces(verts_clip, triangles, codes, offsets, out_clip, out_bary, out_source)
+    write_pieces(verts_clip, triangles, codes, bool(trivial), offsets, out_clip, out_bary, out_source)
     return out_clip, out_bary, out_source
 
 
 @njit(cache=True, parallel=True)
-def count_pieces(verts_clip, triangles, codes, counts):
-    """First pass: how many triangles each source triangle leaves after clipping, into ``counts``."""
+def count_pieces(verts_clip, triangles, codes, trivial, counts):
+    """First pass: how many triangles each source triangle leaves after clipping, into ``counts``
+    (``trivial`` False: no trivial accept or reject, every triangle is cut)."""
     for t in prange(triangles.shape[0]):
         c0, c1, c2 = codes[triangles[t, 0]], codes[triangles[t, 1]], codes[triangles[t, 2]]
-        if c0 & c1 & c2:  # all outside one plane: trivially rejected
+        if trivial and c0 & c1 & c2:  # all outside one plane: trivially rejected
             counts[t] = 0
-        elif (c0 | c1 | c2) == 0:  # all inside every plane: trivially accepted
+        elif trivial and (c0 | c1 | c2) == 0:  # all inside every plane: trivially accepted
             counts[t] = 1
         else:
             poly, bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
@@ -166,7 +169,7 @@ def count_pieces(verts_clip, triangles, codes, counts):
 
 
 @njit(cache=True, parallel=True)
-def write_pieces(verts_clip, triangles, codes, offsets, out_clip, out_bary, out_source):
+def write_pieces(verts_clip, triangles, codes, trivial, offsets, out_clip, out_bary, out_source):
     """Second pass: the pieces of source triangle ``t`` at ``offsets[t]`` onward, as a fan
     around the clipped polygon's first vertex; trivially accepted triangles copied whole."""
     for t in prange(triangles.shape[0]):
@@ -174,7 +177,7 @@ def write_pieces(verts_clip, triangles, codes, offsets, out_clip, out_bary, out_
         if offsets[t + 1] == k:
             continue
         c0, c1, c2 = codes[triangles[t, 0]], codes[triangles[t, 1]], codes[triangles[t, 2]]
-        if (c0 | c1 | c2) == 0:
+        if trivial and (c0 | c1 | c2) == 0:
             for v in range(3):
                 for c in range(4):
                     out_clip[k, v, c] = verts_clip[triangles[t, v], c]

@@ -42,7 +42,8 @@ from pathlib import Path
 # kernel), so the package decides, not the user's shell; a value the user set is kept.
 os.environ.setdefault("OMP_WAIT_POLICY", "passive")
 
-from numba import njit, prange  # noqa: E402  (after the wait policy)
+import numba  # noqa: E402  (after the wait policy)
+from numba import prange  # noqa: E402
 from numba.core.caching import CacheImpl, _CacheLocator  # noqa: E402
 
 __all__ = ["njit", "prange", "SOURCE_DIR", "source_hash", "cache_root", "cache_folder", "KEEP"]
@@ -116,6 +117,19 @@ def cache_folder() -> Path:
     else:
         os.utime(folder)
     return folder
+
+
+def njit(*args, **options):
+    """numba's ``njit`` with the renderer's defaults: ``error_model="numpy"``.
+
+    With numba's default (``"python"``) every float division carries a test for a zero
+    divisor that raises ZeroDivisionError; that branch alone keeps LLVM from vectorising a
+    loop (measured: a float32 ``pow`` over 200k values took 18 ns each, 1.2 ns without it).
+    Under numpy's model x/0 gives ±inf or nan as IEEE says; the kernels guard their own
+    divisions where a zero can occur.
+    """
+    options.setdefault("error_model", "numpy")
+    return numba.njit(*args, **options)
 
 
 _FOLDER: Path | None = None

@@ -21,7 +21,7 @@ from renderer.clip import clip_triangles
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
-from renderer.raster import rasterize_triangles
+from renderer.raster import depth_to_window, rasterize_visibility
 from renderer.reflection.registry import material_table
 from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
 from renderer.texture_sampling import texture_table
@@ -39,10 +39,13 @@ class RenderOptions:
     interpolation : None (the scene's ``[render] interpolation``), "perspective"
         (correct, GPUs) or "screen" (linear in screen space, as the course's scanline
         slides do), for colours, positions and normals.
+    spans : shade each row in spans of one triangle (the fast path, :mod:`renderer.spans`)
+        or, False, pixel by pixel (the plain path; the same bytes, tests compare them).
     """
 
     fill_rule: str = "top-left"
     interpolation: str | None = None
+    spans: bool = True
 
 
 class SceneGeometry(NamedTuple):
@@ -161,19 +164,20 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     materials = material_table(scene)
     translucent = materials.opacity[geo.tri_object[clipped.clip_source]] < 1.0
     opaque = clipped.take(~translucent) if translucent.any() else clipped
-    depth, tri_index, bary, front = rasterize_triangles(opaque.tri_fixed, opaque.tri_window, width, height,
-                                                        rules.fill_rule, ws=ws, depth_test=rules.depth_test,
-                                                        cull_back=rules.cull_back)
+    vis = rasterize_visibility(opaque.tri_fixed, opaque.tri_window, width, height, rules.fill_rule, ws=ws,
+                               depth_test=rules.depth_test, cull_back=rules.cull_back)
 
     lights = view_lights(scene.lights, cam, w2v, scene.render)
     inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
     perspective = (options.interpolation or scene.render.interpolation) == "perspective"
     rgb = np.empty((height, width, 3), np.uint8)
-    shade(Fragments(tri_index, bary, front, opaque.tri_clip, opaque.clip_bary, opaque.clip_source, perspective), geo,
-          inputs, to_8bit(np.asarray(scene.image.background)), rgb)
-    coverage = tri_index >= 0
+    shade(Fragments(vis.tri_index, vis.setup.plane, vis.setup.front, opaque.tri_clip, opaque.clip_bary,
+                    opaque.clip_source, perspective), geo, inputs, to_8bit(np.asarray(scene.image.background)), rgb,
+          spans=options.spans)
+    coverage = vis.tri_index >= 0
     if translucent.any():
-        coverage = coverage | draw_translucent(clipped.take(translucent), depth, rgb, geo, inputs,
+        coverage = coverage | draw_translucent(clipped.take(translucent), vis.depth, rgb, geo, inputs,
                                                scene.render.transparency, perspective, rules, ws)
-    return Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth.copy()),
+    depth = depth_to_window(vis.depth)
+    return Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth),
                  coverage=window_rows_to_image_rows(coverage))
