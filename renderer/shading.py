@@ -151,7 +151,7 @@ def normalise(x, y, z):
     return x, y, z
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit):
     """The linear colour ``(r, g, b)`` of one fragment of clipped triangle ``k`` with
     screen-space weights ``l1, l2`` (of its vertices 1 and 2), by its object's shading path
@@ -228,11 +228,11 @@ def shade_span(k, row, c0, c1, frags, geo, materials, textures, lights, lit, col
         face = path == PIXEL_FACE_NORMAL
         if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
             consts = span_setup(k, row, c0, frags, geo, face)
-            if face and span_normal_only(o, materials, lights):
-                reflect_span(o, materials, lights, consts, face, 1, colour, rgb[row, c0:c0 + 1])
+            constant = face and span_normal_only(o, materials, lights)
+            count = 1 if constant else c1 - c0
+            reflect_span(o, materials, lights, consts, face, count, colour, rgb[row, c0:c0 + count])
+            if constant:
                 copy_along(rgb, row, c0, c1)
-            else:
-                reflect_span(o, materials, lights, consts, face, c1 - c0, colour, rgb[row, c0:c1])
             return
     for col in range(c0, c1):
         l1, l2 = screen_weights(k, row, col, frags.plane)

@@ -84,17 +84,25 @@ def vtk_span(o, materials, lights, consts, face, count, colour, out):
     (:func:`renderer.spans.span_setup`); ``colour`` (3, ≥ count) float32 scratch for the
     linear colours (written in one loop, stored as 8 bits in a second: an 8-bit store in
     the lighting loop kept it from vectorising, 70 ns a pixel instead of 6). Complexities
-    0–2 only (:func:`vtk_span_applies`)."""
+    0–2 only (:func:`vtk_span_applies`). The loops live in :func:`vtk_span_kernel`, compiled
+    once with plain arguments: inlined at its call site with the kernel inputs' named
+    tuples, numba took 16 s more to compile the shading kernel."""
     amb, dif, spe = materials.ambient[o], materials.diffuse[o], materials.specular[o]
-    a0, a1, a2 = np.float32(amb[0]), np.float32(amb[1]), np.float32(amb[2])
-    d0, d1, d2 = np.float32(dif[0]), np.float32(dif[1]), np.float32(dif[2])
-    s0, s1, s2 = np.float32(spe[0]), np.float32(spe[1]), np.float32(spe[2])
-    power = np.float32(materials.power[o])
-    l_col = lights.intensity_rgb
-    complexity = vtk_complexity(o, materials, lights)
+    material = (np.float32(amb[0]), np.float32(amb[1]), np.float32(amb[2]), np.float32(dif[0]), np.float32(dif[1]),
+                np.float32(dif[2]), np.float32(spe[0]), np.float32(spe[1]), np.float32(spe[2]),
+                np.float32(materials.power[o]))
     shiny = spe[0] != 0.0 or spe[1] != 0.0 or spe[2] != 0.0  # else Ks·Cs·sf is 0 whatever sf
+    vtk_span_kernel(vtk_complexity(o, materials, lights), shiny, material, (amb[0] + dif[0], amb[1] + dif[1],
+                    amb[2] + dif[2]), lights.direction, lights.intensity_rgb, consts, face, count, colour, out)
+
+
+@njit(cache=True)
+def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts, face, count, colour, out):
+    """The loops of :func:`vtk_span`: ``material`` (Amb, Dif, Spe as float32 RGB, then the
+    specular power), ``unlit`` Amb + Dif in float64, the lights' directions and colours."""
+    a0, a1, a2, d0, d1, d2, s0, s1, s2, power = material
     if complexity == UNLIT:
-        r, g, b = np.float32(amb[0] + dif[0]), np.float32(amb[1] + dif[1]), np.float32(amb[2] + dif[2])
+        r, g, b = np.float32(unlit[0]), np.float32(unlit[1]), np.float32(unlit[2])
         for i in range(count):
             colour[0, i], colour[1, i], colour[2, i] = r, g, b
         store8(colour, count, out)
@@ -111,8 +119,8 @@ def vtk_span(o, materials, lights, consts, face, count, colour, out):
         store8(colour, count, out)
         return
     if l_col.shape[0] == 1:  # one directional light: no loop over lights, so this loop vectorises
-        lx, ly, lz = (np.float32(lights.direction[0, 0]), np.float32(lights.direction[0, 1]),
-                      np.float32(lights.direction[0, 2]))  # VTK's l: the direction the light travels
+        lx, ly, lz = (np.float32(direction[0, 0]), np.float32(direction[0, 1]),
+                      np.float32(direction[0, 2]))  # VTK's l: the direction the light travels
         c0, c1, c2 = np.float32(l_col[0, 0]), np.float32(l_col[0, 1]), np.float32(l_col[0, 2])
         for i in range(count):
             px, py, pz, nx, ny, nz = span_pixel(consts, i, face)
@@ -131,8 +139,8 @@ def vtk_span(o, materials, lights, consts, face, count, colour, out):
         vx, vy, vz = _view_vector(px, py, pz)
         sd0 = sd1 = sd2 = ss0 = ss1 = ss2 = F0  # Σ df·Lc, Σ sf·Lc
         for li in range(l_col.shape[0]):
-            lx, ly, lz = (np.float32(lights.direction[li, 0]), np.float32(lights.direction[li, 1]),
-                          np.float32(lights.direction[li, 2]))
+            lx, ly, lz = (np.float32(direction[li, 0]), np.float32(direction[li, 1]),
+                          np.float32(direction[li, 2]))
             c0, c1, c2 = np.float32(l_col[li, 0]), np.float32(l_col[li, 1]), np.float32(l_col[li, 2])
             ndl, rdv = _reflect_dot(lx, ly, lz, nx, ny, nz, vx, vy, vz)
             df = max(F0, -ndl)
