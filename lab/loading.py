@@ -8,8 +8,6 @@ All validation happens here, at the edge, every value read through
 from __future__ import annotations
 
 import errno
-import inspect
-import math
 import os
 import tomllib
 from dataclasses import replace
@@ -19,11 +17,13 @@ import numpy as np
 
 from lab import shapes
 from lab.mesh import Mesh
-from lab.presets import preset_path
+from lab.presets import preset_names, preset_path
 from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, TRANSPARENCIES, Camera, Image,
                        Light, Material, RenderSettings, Scene, SceneObject, headlight)
-from lab.values import MAX_MAGNITUDE, file_problem, real, show
+from lab.framing import make_shape, mesh_file_scene, shape_scene
 from lab.matrices import model_matrix
+from lab.suggest import did_you_mean
+from lab.values import IS_A_FOLDER, file_problem, show
 from lab.validation import SceneError, Table, quantise_colour
 
 MAX_SIZE = 8192
@@ -117,7 +117,7 @@ def _light_position(s: Table, table: dict):
 OBJECT_KEYS = {"mesh", "shape", "params", "color", "ambient", "diffuse", "specular", "specular_power",
                "specular_color", "opacity", "shading", "scale", "rotate", "translate", "lighting", "name",
                "model", "ambient_color", "diffuse_color", "shininess", "normals", "crease_angle", "csg",
-               "texture", "texture_filter", "texture_wrap"}
+               "texture", "texture_filter", "texture_wrap", "matrix"}
 
 
 def _object(src, base: Path | None, i, table, inputs: list) -> SceneObject:
@@ -146,12 +146,31 @@ def _object(src, base: Path | None, i, table, inputs: list) -> SceneObject:
                    shininess=s.number("shininess", 0.0, 0.0, 128.0))
     mesh = _normals(s, mesh, table)
     texture = _texture(s, base, mesh, table, inputs)
-    m = model_matrix(scale=s.vector("scale", (1.0, 1.0, 1.0)), rotate=s.vector("rotate", (0.0, 0.0, 0.0)),
-                     translate=s.vector("translate", (0.0, 0.0, 0.0)))
+    if "matrix" in table:
+        m = _matrix(s, table)
+    else:
+        m = model_matrix(scale=s.vector("scale", (1.0, 1.0, 1.0)), rotate=s.vector("rotate", (0.0, 0.0, 0.0)),
+                         translate=s.vector("translate", (0.0, 0.0, 0.0)))
     if abs(np.linalg.det(m[:3, :3])) < 1e-300:
-        raise s.error("scale", "a zero scale flattens the object")
+        raise s.error("matrix" if "matrix" in table else "scale", "a zero scale flattens the object")
     return SceneObject(mesh=mesh, material=mat, shading=s.choice("shading", "flat", SHADINGS),
                        model_to_world=m, name=str(table.get("name", name)), texture=texture)
+
+
+def _matrix(s: Table, table: dict) -> np.ndarray:
+    """``matrix``: the model-to-world matrix itself, 4 rows of 4 numbers for row vectors
+    (``P_world = [P, 1] @ M``, translation in the last row, last column 0, 0, 0, 1), as
+    :mod:`lab.scene_writer` writes an arbitrary (sheared, mirrored) transform exactly."""
+    if any(k in table for k in ("scale", "rotate", "translate")):
+        raise s.error("matrix", "give either 'matrix' or scale/rotate/translate, not both")
+    rows = table["matrix"]
+    if not isinstance(rows, list) or len(rows) != 4:
+        raise s.error("matrix", f"expected 4 rows of 4 numbers, got {show(rows)}")
+    m = np.array([Table(s.source, f"{s.where}.matrix", {"row": r}, {"row"}).vector("row", None, 4)
+                  for r in rows])
+    if not np.array_equal(m[:, 3], [0.0, 0.0, 0.0, 1.0]):
+        raise s.error("matrix", f"the last column must be 0, 0, 0, 1 (an affine transform), got {m[:, 3].tolist()}")
+    return m
 
 
 def _texture(s: Table, base: Path | None, mesh: Mesh, table: dict, inputs: list):
@@ -230,8 +249,18 @@ def resolve_path(base: Path | None, value: str) -> Path:
         spec = importlib.util.find_spec("pyvista")
         if spec is None or spec.origin is None:
             raise ValueError(f"{value}: PyVista is not installed, so its example files are not here")
-        return Path(spec.origin).parent / "examples" / value[len(PYVISTA_EXAMPLES):]
-    return Path(value) if base is None else base / value
+        folder = Path(spec.origin).parent / "examples"
+        name = value[len(PYVISTA_EXAMPLES):]
+        path = folder / name
+        if file_problem(path) is not None:
+            known = sorted(p.name for p in folder.iterdir() if p.is_file() and not p.name.endswith((".py", ".pyc")))
+            raise ValueError(f"{value}: PyVista has no example file {name!r}{did_you_mean(name, known)}; "
+                             f"its files: {', '.join(known)}")
+        return path
+    path = Path(value) if base is None else base / value
+    if file_problem(path) == IS_A_FOLDER:
+        raise ValueError(f"{path}: is a folder, not a file")
+    return path
 
 
 def _mesh_file(s: Table, base: Path | None, value, inputs: list) -> Mesh:
@@ -247,75 +276,10 @@ def _mesh_file(s: Table, base: Path | None, value, inputs: list) -> Mesh:
         raise s.error("mesh", str(exc)) from None
 
 
-# --------------------------------------------------------------------------- shapes
-def make_shape(name, params: dict, where=None) -> Mesh:
-    """Build a built-in shape by name with keyword parameters, checking both.
-
-    ``where(message)`` makes the exception to raise (so a scene file can name its key).
-    """
-    err = where or SceneError
-    if not isinstance(name, str) or name not in shapes.SHAPES:
-        raise err(f"unknown shape {show(name)}; valid: {', '.join(shapes.SHAPES)}")
-    sig = inspect.signature(shapes.SHAPES[name])
-    for key, value in params.items():
-        if key not in sig.parameters:
-            raise err(f"{name} has no parameter {show(key)}; valid: {', '.join(sig.parameters)}")
-        default = sig.parameters[key].default
-        lo, hi = shapes.PARAM_RANGES.get((name, key), (0, 8))
-        if isinstance(default, int) and (not isinstance(value, int) or isinstance(value, bool) or not lo <= value <= hi):
-            raise err(f"{name}: {key} must be a whole number in {lo}..{hi}, got {show(value)}")
-        if isinstance(default, float) and not 0 < (real(value) or 0) <= MAX_MAGNITUDE:
-            raise err(f"{name}: {key} must be a positive number up to {MAX_MAGNITUDE:g}, got {show(value)}")
-    return shapes.SHAPES[name](**params)
-
-
-def parse_shape_spec(spec: str) -> tuple[str, dict]:
-    """``"icosphere:level=3,radius=2"`` → ``("icosphere", {"level": 3, "radius": 2.0})``."""
-    name, _, rest = spec.partition(":")
-    params = {}
-    for item in filter(None, rest.split(",")):
-        key, eq, value = item.partition("=")
-        if not eq:
-            raise SceneError(f"{spec}: expected key=value, got {item!r}")
-        try:
-            params[key.strip()] = int(value)
-        except ValueError:
-            try:
-                params[key.strip()] = float(value)
-            except ValueError:
-                raise SceneError(f"{spec}: {key}: expected a number, got {value!r}") from None
-    return name.strip(), params
-
-
-def default_camera(bounds: np.ndarray, view_angle: float = 30.0) -> Camera:
-    """A camera that frames ``bounds`` the way ``vtkRenderer::ResetCamera`` does.
-
-    Focal point at the bounds' centre; distance = radius / sin(view_angle / 2) with radius
-    half the bounds' diagonal; looking from the direction (1, 0.8, 1.6) with y up.
-    """
-    lo, hi = bounds[0::2], bounds[1::2]
-    centre = (lo + hi) / 2.0
-    radius = max(float(np.linalg.norm(hi - lo)) / 2.0, 1e-6)
-    dist = radius / math.sin(math.radians(view_angle) / 2.0)
-    direction = np.array([1.0, 0.8, 1.6]) / np.linalg.norm([1.0, 0.8, 1.6])
-    return Camera(position=tuple(centre + dist * direction), focal_point=tuple(centre), view_up=(0.0, 1.0, 0.0),
-                  view_angle=view_angle)
-
-
-def shape_scene(spec: str) -> Scene:
-    """A scene of one built-in shape: grey-blue material, default camera, one headlight."""
-    name, params = parse_shape_spec(spec)
-    mesh = make_shape(name, params, where=lambda m: SceneError(f"{spec}: {m}"))
-    mat = Material(color=quantise_colour((0.6, 0.7, 0.9)), ambient=0.1, diffuse=0.8, specular=0.3,
-                   specular_power=20.0)
-    obj = SceneObject(mesh=mesh, material=mat, name=name)
-    cam = default_camera(obj.world_bounds())
-    return Scene(image=Image(), camera=cam, lights=(headlight(),), objects=(obj,), source=spec)
-
-
 # --------------------------------------------------------------------------- entry point
 def load_scene(path_or_name, allow_large: bool = False) -> Scene:
-    """Load a scene file (TOML), a preset name from ``lab/scenes``, or a shape spec.
+    """Load a scene file (TOML), a preset name from ``lab/scenes``, a shape spec, or a
+    mesh file (any other existing file: :func:`lab.framing.mesh_file_scene`).
 
     ``allow_large`` lifts the image size limit (MAX_SIZE × MAX_SIZE pixels).
 
@@ -333,8 +297,12 @@ def load_scene(path_or_name, allow_large: bool = False) -> Scene:
         elif text.partition(":")[0] in shapes.SHAPES:
             return shape_scene(text)
         elif file_problem(path) == os.strerror(errno.ENOENT):
-            raise SceneError(f"{text if len(text) <= 200 else text[:199] + '…'}: no such scene file, preset or shape "
-                             f"(shapes: {', '.join(shapes.SHAPES)}; presets: `scanlab scenes`)")
+            hint = did_you_mean(text.partition(":")[0], [*preset_names(), *shapes.SHAPES]) if len(text) <= 200 else ""
+            raise SceneError(f"{text if len(text) <= 200 else text[:199] + '…'}: no such scene file, preset or shape"
+                             f"{hint} (shapes: {', '.join(shapes.SHAPES)}; presets: `scanlab scenes`)")
+        elif file_problem(path) in (None, IS_A_FOLDER):
+
+            return mesh_file_scene(path)
     problem = file_problem(path)
     if problem:
         raise SceneError(f"{path}: cannot read: {problem}")
@@ -367,7 +335,7 @@ def parse_scene(raw: bytes, source: str = "<scene>", base: Path | None = None, a
 
 def scene_from_dict(data: dict, source: str = "<scene>", base: Path | None = None,
                     allow_large: bool = False) -> Scene:
-    """Build a validated :class:`Scene` from parsed TOML (see the README for the keys).
+    """Build a validated :class:`Scene` from parsed TOML (docs/scene-files.md lists the keys).
 
     ``allow_large`` lifts the image size limit of MAX_SIZE × MAX_SIZE pixels (up to
     LARGE_SIZE on each side).

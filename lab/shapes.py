@@ -495,3 +495,28 @@ PARAM_RANGES = {
 
 SHAPES = {"cube": cube, "quad": quad, "icosahedron": icosahedron, "icosphere": icosphere, "menger": menger,
           "icosahedron_fractal": icosahedron_fractal, "cylinder": cylinder, "cone": cone}
+"""The built-in shapes by name: ``NAME:key=value,...`` on the command line, ``shape = NAME`` in a scene file."""
+
+
+def shape_parameters(name: str) -> list[tuple[str, object, tuple[int, int] | None]]:
+    """Each parameter of shape ``name``: (parameter, default, whole-number range or None).
+
+    >>> shape_parameters("menger")
+    [('level', 2, (0, 4)), ('keep_internal', 0, (0, 1))]
+    """
+    import inspect
+
+    params = inspect.signature(SHAPES[name]).parameters.values()
+    return [(p.name, p.default, PARAM_RANGES.get((name, p.name), (0, 8)) if isinstance(p.default, int) else None)
+            for p in params]
+
+
+def shape_summary(name: str) -> str:
+    """One line: ``NAME:param=default (lo..hi),...`` and the first line of its docstring.
+
+    >>> shape_summary("quad").split("  ")[0]
+    'quad:size=1.0'
+    """
+    params = ",".join(f"{p}={d}" + (f" ({r[0]}..{r[1]})" if r else "") for p, d, r in shape_parameters(name))
+    doc = (SHAPES[name].__doc__ or "").strip().splitlines()[0].replace("``", "")
+    return f"{name}:{params}  {doc}"

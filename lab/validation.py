@@ -12,10 +12,10 @@ line whatever the file holds.
 """
 from __future__ import annotations
 
-import difflib
 import math
 from collections.abc import Iterable, Mapping
 
+from lab.suggest import did_you_mean
 from lab.values import MAX_MAGNITUDE, real, show
 
 __all__ = ["REQUIRED", "SceneError", "Table", "quantise_colour"]
@@ -62,8 +62,7 @@ class Table:
         allowed = sorted(allowed)
         for key in self.table:
             if key not in allowed:
-                near = difflib.get_close_matches(key, allowed, n=1) if isinstance(key, str) else []
-                hint = f" (did you mean '{near[0]}'?)" if near else f" (valid: {', '.join(allowed)})"
+                hint = (did_you_mean(key, allowed) if isinstance(key, str) else "") or f" (valid: {', '.join(allowed)})"
                 raise self.error(key if str(key).isidentifier() else show(key, 40), f"unknown key{hint}")
 
     def error(self, key: str | None, message: str) -> SceneError:
@@ -136,7 +135,8 @@ class Table:
         """
         v = self.get(key, default)
         if not isinstance(v, str) or v not in choices:
+            hint = did_you_mean(v, choices) if isinstance(v, str) else ""
             if noun:
-                raise self.error(key, f"unknown {noun} {show(v)}; valid: {', '.join(choices)}")
-            raise self.error(key, f"{show(v)} is not one of {', '.join(choices)}")
+                raise self.error(key, f"unknown {noun} {show(v)}{hint}; valid: {', '.join(choices)}")
+            raise self.error(key, f"{show(v)} is not one of {', '.join(choices)}{hint}")
         return v

@@ -48,11 +48,18 @@ def finite(x) -> float | None:
     return v if v is not None and math.isfinite(v) and abs(v) <= MAX_MAGNITUDE else None
 
 
+IS_A_FOLDER = "is a folder, not a regular file"
+"""What :func:`file_problem` says of a folder (callers compare with it to say more)."""
+
+
 def file_problem(path) -> str | None:
     """Why ``path`` cannot be read as a regular file ("No such file or directory", "File
-    name too long", "not a regular file" for a folder, device or pipe ...), or None."""
+    name too long", "is a folder, not a regular file", "not a regular file" for a device or
+    pipe ...), or None."""
     try:
         mode = os.stat(path).st_mode
     except (OSError, ValueError) as exc:  # ValueError: a NUL byte in the name
         return getattr(exc, "strerror", None) or str(exc)
+    if stat.S_ISDIR(mode):
+        return IS_A_FOLDER
     return None if stat.S_ISREG(mode) else "not a regular file"

@@ -8,12 +8,12 @@ project = "scanlab lessons"
 author = "scanlab"
 copyright = "scanlab"
 
-extensions = ["myst_parser", "lessons.site"]
+extensions = ["myst_parser", "lab.app.lesson_site"]
 myst_enable_extensions = ["dollarmath", "amsmath", "deflist", "colon_fence"]
 myst_heading_anchors = 3
 
 root_doc = "index"
-exclude_patterns = ["README.md", "node_modules", "site", "figures", "locales", "_build", "**/__pycache__"]
+exclude_patterns = ["README.md", "node_modules", "figures", "locales", "_build", "**/__pycache__"]
 templates_path = ["_templates"]
 html_static_path = ["_static"]
 
@@ -34,4 +34,4 @@ html_sidebars = {"**": ["sidebar/brand.html", "lang-switch.html", "sidebar/searc
                         "sidebar/navigation.html", "sidebar/scroll-end.html"]}
 html_theme_options = {"top_of_page_buttons": []}
 
-mathjax_path = "mathjax/tex-chtml.js"  # _static/mathjax/, copied from npm's mathjax@3 (lessons.site.assets)
+mathjax_path = "mathjax/tex-chtml.js"  # _static/mathjax/, copied from npm's mathjax@3 (lab.app.lesson_site.assets)

@@ -10,6 +10,9 @@
 - ``separate-specular.png``: a shiny textured sphere in OpenGL's single-colour mode (the
   texture tints the highlight) beside ``GL_SEPARATE_SPECULAR_COLOR`` (the highlight keeps
   the light's colour), with the ΔE2000 map between them: it is the highlight.
+
+The figures are kept in git: they carry no timings, so making them again gives the same
+bytes (tested), and a change shows in ``git status`` only when a picture changed.
 """
 from __future__ import annotations
 
@@ -18,7 +21,8 @@ import os
 import tempfile
 from pathlib import Path
 
-from compare.images import side_by_side_figure
+from compare.comparison import settings_line
+from compare.images import PanelText, side_by_side_figure
 from compare.metrics import compare_frames, coverage_masks
 from lab.loading import load_scene
 from renderer import RenderOptions, render
@@ -49,14 +53,18 @@ def interpolation_figure(out: Path) -> dict:
     m_facing, _ = interpolation_metrics(facing(tilted))
     shared, mismatch = coverage_masks(screen, perspective)
     side_by_side_figure(screen.rgb, perspective.rgb, de, mismatch, m_tilted, out / "interpolation.png",
-                        title="Gouraud colours on a tilted floor", shared=shared,
-                        labels=("screen-linear (course scanline)", "perspective-correct (GPU, VTK)"))
+                        PanelText(title="Gouraud colours on a tilted floor",
+                                  labels=("screen-linear (course scanline)", "perspective-correct (GPU, VTK)"),
+                                  settings=settings_line(tilted, "none, both images are scanlab's",
+                                                         interpolation="screen (left) | perspective (right)")),
+                        shared=shared, coverage=(screen.coverage, perspective.coverage))
     return {"tilted": m_tilted, "facing": m_facing}
 
 
 def gouraud_vs_vtk_figure(out: Path) -> dict:
     """Write ``gouraud-vs-vtk.png`` (textbook sphere, OpenGL Gouraud vs VTK native)."""
-    from compare.report import OUTPUT_FILES, compare_scene
+    from compare.comparison import compare_scene
+    from compare.report import OUTPUT_FILES
 
     scene = load_scene("textbook-sphere").with_overrides(model="opengl", shading="gouraud")
     work = Path(tempfile.mkdtemp(dir=out, prefix=".gouraud-vs-vtk."))  # new, so everything in it is ours
@@ -79,8 +87,11 @@ def separate_specular_figure(out: Path) -> dict:
     metrics, de = compare_frames(single, separate)
     shared, mismatch = coverage_masks(single, separate)
     side_by_side_figure(single.rgb, separate.rgb, de, mismatch, metrics, out / "separate-specular.png",
-                        title="A textured shiny sphere: where does the highlight go?", shared=shared,
-                        labels=("GL_SINGLE_COLOR (texture × everything)", "GL_SEPARATE_SPECULAR_COLOR"))
+                        PanelText(title="A textured shiny sphere: where does the highlight go?",
+                                  labels=("GL_SINGLE_COLOR (texture × everything)", "GL_SEPARATE_SPECULAR_COLOR"),
+                                  settings=settings_line(scene, "none, both images are scanlab's",
+                                                         specular_colour="single (left) | separate (right)")),
+                        shared=shared, coverage=(single.coverage, separate.coverage))
     return metrics
 
 

@@ -8,12 +8,12 @@ Entry point: :func:`render`. Stages, in order: :mod:`~renderer.transform`,
 reflection models of :mod:`~renderer.reflection` and the lights of :mod:`~renderer.lights`),
 :mod:`~renderer.translucency`, assembled in :mod:`~renderer.pipeline`.
 
-Importing the package loads nothing: ``render`` and ``RenderOptions`` come from
-:mod:`renderer.pipeline` on first use, so ``import renderer.camera`` does not compile
-or load the kernels.
+Importing the package loads nothing: ``render``, ``render_stages``, ``Stages`` and
+``RenderOptions`` come from :mod:`renderer.pipeline` on first use, so
+``import renderer.camera`` does not compile or load the kernels.
 """
 
-__all__ = ["RenderOptions", "render"]
+__all__ = ["RenderOptions", "Stages", "render", "render_stages"]
 
 
 def __getattr__(name):

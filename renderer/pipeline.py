@@ -133,6 +133,35 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
                          np.repeat(owners, n_points), tcoords, normals_face, bool(scene.camera.parallel))
 
 
+class Stages(NamedTuple):
+    """What the pipeline held on the way to a frame, for the stage views (:func:`render_stages`).
+
+    Image rows (row 0 at the top) for the per-pixel buffers, window coordinates (y up,
+    pixels) for the triangles, as :mod:`renderer.window` and :mod:`renderer.raster` hold them.
+
+    geometry : the scene's vertices and source triangles after stages 1–3 (:class:`SceneGeometry`).
+    tri_window : (K, 3, 3) the clipped triangles in window space (x, y up, z in 0..1), in
+        draw order (back to front for the painter's algorithm).
+    tri_fixed : (K, 3, 2) int64, their x, y snapped to 1/256 pixel.
+    clip_source : (K,) the source triangle (row of ``geometry.triangles``) each came from.
+    front : (K,) bool, counter-clockwise on screen (:func:`renderer.raster.signed_area_fixed` > 0).
+    translucent : (K,) bool, drawn as translucent fragments instead of through the z-buffer.
+    depth : (H, W) the z-buffer after the opaque pass: window depth on the 24-bit grid,
+        1.0 where empty (the frame's ``depth``).
+    triangle : (H, W) int64, the source triangle that won each pixel of the opaque pass,
+        −1 where none did (the triangle-ID image).
+    """
+
+    geometry: SceneGeometry
+    tri_window: np.ndarray
+    tri_fixed: np.ndarray
+    clip_source: np.ndarray
+    front: np.ndarray
+    translucent: np.ndarray
+    depth: np.ndarray
+    triangle: np.ndarray
+
+
 def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     """Draw ``scene`` with scanlab's own pipeline.
 
@@ -146,6 +175,22 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     >>> render(load_scene("cube")).rgb.shape
     (384, 512, 3)
     """
+    return _render(scene, options, keep_stages=False)[0]
+
+
+def render_stages(scene, options: RenderOptions = RenderOptions()) -> tuple[Frame, Stages]:
+    """:func:`render`, and the buffers the pipeline held before the colours (:class:`Stages`).
+
+    >>> from lab import load_scene
+    >>> frame, stages = render_stages(load_scene("cube"))
+    >>> int(stages.triangle.max()) < 12 and stages.depth.shape == (384, 512)
+    True
+    """
+    return _render(scene, options, keep_stages=True)
+
+
+def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, Stages | None]:
+    """The pipeline; with ``keep_stages`` its buffers are copied out of the workspace too."""
     width, height = scene.image.size
     cam = scene.camera
     w2v = world_to_view(cam)
@@ -178,6 +223,16 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     if translucent.any():
         coverage = coverage | draw_translucent(clipped.take(translucent), vis.depth, rgb, geo, inputs,
                                                scene.render.transparency, perspective, rules, ws)
-    depth = depth_to_window(vis.depth)
-    return Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth),
-                 coverage=window_rows_to_image_rows(coverage))
+    frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth_to_window(vis.depth)),
+                  coverage=window_rows_to_image_rows(coverage))
+    if not keep_stages:
+        return frame, None
+    source = opaque.clip_source
+    tri_index = vis.tri_index
+    triangle = np.where(tri_index >= 0, source[np.maximum(tri_index, 0)] if len(source) else -1, -1)
+    fixed = clipped.tri_fixed
+    area = ((fixed[:, 1, 0] - fixed[:, 0, 0]) * (fixed[:, 2, 1] - fixed[:, 0, 1])
+            - (fixed[:, 2, 0] - fixed[:, 0, 0]) * (fixed[:, 1, 1] - fixed[:, 0, 1]))
+    stages = Stages(geo, clipped.tri_window.copy(), fixed.copy(), clipped.clip_source.copy(), area > 0,
+                    translucent.copy(), frame.depth, window_rows_to_image_rows(triangle).copy())
+    return frame, stages

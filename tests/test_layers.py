@@ -69,8 +69,23 @@ def test_a_renderer_module_loads_neither_compare_nor_vtk(module):
 
 
 def test_rendering_a_preset_loads_neither_compare_nor_vtk_nor_matplotlib():
-    loaded = loaded_after("import lab, renderer; renderer.render(lab.load_scene('torus-mesh'))")
+    loaded = loaded_after("import lab, renderer; renderer.render(lab.load_scene('menger'))")
     assert forbidden(loaded, ABOVE_RENDERER) == []
+
+
+def test_a_mesh_file_is_read_through_the_door_and_rendering_adds_nothing_above():
+    """torus-mesh reads a PLY file: VTK's reader is loaded (through the ground floor's door,
+    lab.meshfiles.vtk_readers), but neither renderer, compare nor the application; rendering
+    the scene then loads no VTK of its own, nor compare or matplotlib."""
+    loaded = loaded_after("import lab; lab.load_scene('torus-mesh')")
+    assert "vtkmodules.vtkIOPLY" in loaded and "lab.meshfiles.vtk_readers" in loaded
+    assert forbidden(loaded, ("renderer", "compare", "lessons", "lab.app", "pyvista", "matplotlib", "numba")) == []
+    probe = ("import lab, sys, json; scene = lab.load_scene('torus-mesh'); before = set(sys.modules); import renderer; "
+             "renderer.render(scene); print(json.dumps(sorted(set(sys.modules) - before)))")
+    done = subprocess.run([sys.executable, "-c", probe], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    added = json.loads(done.stdout.strip().splitlines()[-1])
+    assert "renderer.pipeline" in added and forbidden(added, ABOVE_RENDERER) == []
 
 
 @pytest.mark.parametrize("module", COMPARE)

@@ -1,21 +1,28 @@
 """The ``scanlab`` command (also ``python -m lab``).
 
 Every expected failure — a bad scene file, a bad option, no OpenGL for VTK — ends in one
-line on stderr and exit status 2; ``compare --fail-above`` exits 1 on a failed verdict.
+line on stderr and exit status 2. ``compare`` and ``demo`` judge against the parity bars
+(:mod:`compare.verdict`): exit status 0 on a pass (or a scene meant to fail that fails),
+1 on a FAIL.
 """
 from __future__ import annotations
 
 import argparse
-import difflib
+import math
 import os
+import re
 import sys
 from pathlib import Path
 
-from lab.app import lessons_site
+from lab.app.lesson_site import build as lessons_site
+from lab.app.demo import scene_name
 from lab.app.exercises.command import add_parser as add_exercise_parser
+from lab.app.sweep import sweep_command
 from lab.loading import LARGE_SIZE, MAX_SIZE, SceneError, load_scene, size_problem
 from lab.presets import SCENES_DIR, preset_description, preset_names
 from lab.scene import MODELS, SHADINGS
+from lab.shapes import SHAPES, shape_summary
+from lab.suggest import closest, did_you_mean
 
 
 class UsageError(Exception):
@@ -40,6 +47,9 @@ class _Parser(argparse.ArgumentParser):
         message = " ".join(message.split())
         if message.startswith("unrecognized arguments:"):
             message += _option_hint(self, message.split(":", 1)[1].split())
+        choice = re.search(r"invalid choice: '(.*?)' \(choose from (.*)\)$", message)
+        if choice:
+            message += did_you_mean(choice.group(1), re.findall(r"'([^']*)'", choice.group(2)))
         self.exit(2, f"{self.prog}: {message}; see {self.prog} --help\n")
 
 
@@ -52,9 +62,9 @@ def _option_hint(parser: argparse.ArgumentParser, unknown: list[str]) -> str:
             if isinstance(action.choices, dict):
                 options.update(o for a in action.choices[sub]._actions for o in a.option_strings)
     for word in unknown:
-        near = difflib.get_close_matches(word.split("=")[0], sorted(options), n=1) if word.startswith("-") else []
+        near = closest(word.split("=")[0], sorted(options)) if word.startswith("-") else None
         if near:
-            return f" (did you mean {near[0]}?)"
+            return f" (did you mean {near}?)"
     return ""
 
 
@@ -69,14 +79,49 @@ def _size(text: str) -> tuple[int, int]:
     return w, h
 
 
+def _count(text: str) -> int:
+    """A whole number of at least 1 (``--repeat``, ``--cases``)."""
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {text!r}")
+    return n
+
+
+def _limit(text: str) -> float:
+    """A finite number of at least 0 (``--fail-above``)."""
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    if not (math.isfinite(v) and v >= 0):
+        raise argparse.ArgumentTypeError(f"expected a finite number of at least 0, got {text!r}")
+    return v
+
+
+def _bar(text: str) -> tuple[str, float]:
+    """``NAME=VALUE``, a bar of :mod:`compare.verdict` (checked there)."""
+    from compare.verdict import parse_bar
+
+    try:
+        return parse_bar(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+SCENE_HELP = ("a scene file (.toml), a preset name (see `scanlab scenes`), a mesh file (.ply .obj .stl .vtk .vtp) "
+              f"or a built-in shape such as icosphere:level=3 (shapes: {', '.join(SHAPES)})")
+
+
 def _allow_large_arg(p: argparse.ArgumentParser) -> None:
     p.add_argument("--allow-large", action="store_true",
                    help=f"accept images beyond {MAX_SIZE}x{MAX_SIZE} pixels (up to {LARGE_SIZE}x{LARGE_SIZE})")
 
 
 def _scene_args(p: argparse.ArgumentParser) -> None:
-    p.add_argument("scene", help="a scene file (.toml), a preset name (see `scanlab scenes`) or a built-in shape "
-                                 "such as cube, icosahedron, quad, icosphere:level=3")
+    p.add_argument("scene", help=SCENE_HELP)
     p.add_argument("--shading", choices=SHADINGS, help="override every object's shading")
     p.add_argument("--size", type=_size, metavar="WxH",
                    help=f"override the image size, e.g. 640x480 (at most {MAX_SIZE}x{MAX_SIZE} without --allow-large)")
@@ -93,10 +138,6 @@ def _load(args):
             raise UsageError(f"--size: {problem}")
     scene = load_scene(args.scene, allow_large=args.allow_large)
     return scene.with_overrides(shading=args.shading, size=args.size, model=args.model)
-
-
-def _scene_name(spec: str) -> str:
-    return Path(spec).stem if spec.endswith(".toml") else spec.replace(":", "_").replace("=", "").replace(",", "_")
 
 
 def _same_file(a: Path, b: Path) -> bool:
@@ -148,70 +189,127 @@ def cmd_reference(args) -> int:
     return _draw_to_png(args, render_reference)
 
 
-def cmd_compare(args) -> int:
-    from compare.report import OUTPUT_FILES, compare_scene, summary_line
-
-    scene = _load(args)
+def _out_folder(args, scene, files) -> Path:
+    """``--out DIR`` checked: not a file, and none of ``files`` in it would overwrite an input."""
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise UsageError(f"--out {args.out}: is a file, not a folder")
-    for name in OUTPUT_FILES:
+    for name in files:
         _output(out / name, scene)
-    m = compare_scene(scene, out, name=_scene_name(args.scene), reference=args.reference)
-    print(summary_line(m))
-    print(f"wrote {out}/ ({', '.join(OUTPUT_FILES)})")
-    if args.fail_above is not None and m["delta_e_2000"]["p999"] > args.fail_above:
-        print(f"FAIL: 99.9th percentile ΔE2000 {m['delta_e_2000']['p999']:.3f} > {args.fail_above}", file=sys.stderr)
-        return 1
+    return out
+
+
+def _bars(args) -> dict | None:
+    """The bars of ``--bar`` and ``--fail-above`` over the parity bars, or None for the parity bars alone."""
+    from compare.verdict import PARITY_BARS
+
+    extra = dict(args.bar or [])
+    if args.fail_above is not None:
+        extra["p999"] = args.fail_above
+    return {**PARITY_BARS, **extra} if extra else None
+
+
+def cmd_compare(args) -> int:
+    from compare.comparison import run_comparison
+    from compare.report import OUTPUT_FILES, summary_line
+    from compare.stages import STAGE_FILES
+
+    scene = _load(args)
+    files = OUTPUT_FILES + (STAGE_FILES if args.stages else ())
+    out = _out_folder(args, scene, files)
+    result = run_comparison(scene, name=scene_name(args.scene), reference=args.reference, bars=_bars(args),
+                            stages=args.stages)
+    result.write(out)
+    print(summary_line(result.metrics))
+    print(f"wrote {out}/ ({', '.join(files)})")
+    verdict = result.verdict
+    print(verdict.line(), file=sys.stdout if verdict.ok else sys.stderr)
+    return 0 if verdict.ok else 1
+
+
+def cmd_stages(args) -> int:
+    from compare.comparison import run_comparison
+    from compare.report import write_json
+    from compare.stages import STAGE_FILES, stages_figure
+
+    scene = _load(args)
+    out = _out_folder(args, scene, STAGE_FILES + ("metrics.json",))
+    result = run_comparison(scene, name=scene_name(args.scene), stages=True, timings=False)
+    out.mkdir(parents=True, exist_ok=True)
+    stages_figure(result.ours_frame, result.stages, result.reference_frame, out / STAGE_FILES[0],
+                  title=f"{result.name}: the stages before the colours", culling=scene.render.cull_backfaces)
+    write_json(out / "metrics.json", result.metrics)
+    d = result.metrics["depth"]
+    print(f"{result.name}: depth (ours − VTK, 24-bit steps) max {d['max_steps']}, 99th percentile "
+          f"{d['p99_steps']:g}, more than one step apart on {d['pixels_over_1_step']:,} of "
+          f"{d['compared_pixels']:,} pixels ({100 * d['over_1_step']:.3f} %)")
+    print(f"wrote {out}/ ({', '.join(STAGE_FILES + ('metrics.json',))})")
     return 0
 
 
 def cmd_scenes(args) -> int:
     names = preset_names()
     width = max(len(n) for n in names)
+    print("presets:")
     for name in names:
-        print(f"{name:<{width}}  {preset_description(name)}")
-    print(f"\n{len(names)} presets in {SCENES_DIR}; built-in shapes: cube, quad, icosahedron, icosphere:level=N")
+        print(f"  {name:<{width}}  {preset_description(name)}")
+    print(f"\nbuilt-in shapes, as NAME or NAME:key=value,... (parameter=default, whole-number range):")
+    for name in SHAPES:
+        print(f"  {shape_summary(name)}")
+    print(f"\n{len(names)} presets in {SCENES_DIR}; {len(SHAPES)} shapes in lab/shapes.py. "
+          "A scene file (.toml) or a mesh file also works as SCENE.")
     return 0
 
 
 def cmd_bench(args) -> int:
     from lab.app.bench_command import run_bench
 
-    if args.repeat < 1:
-        raise UsageError("--repeat: must be at least 1")
     return run_bench(args)
 
 
 def cmd_demo(args) -> int:
     from lab.app.demo import run_demo
 
-    names = preset_names()
-    for name in args.scenes:
-        if name not in names:
-            near = difflib.get_close_matches(name, names, n=1)
-            hint = f"did you mean {near[0]}?" if near else "see `scanlab scenes`"
-            raise UsageError(f"demo: {name!r} is not a preset ({hint})")
+    specs = args.scenes or preset_names()
+    for spec in specs:  # every scene is checked before the first comparison starts
+        load_scene(spec)
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise UsageError(f"--out {args.out}: is a file, not a folder")
-    return run_demo(out, args.scenes or names)
+    return run_demo(out, specs)
 
 
 def cmd_export(args) -> int:
     from lab.meshfiles import MeshFileError
     from lab.meshfiles.write import writer_for
 
+    if Path(args.output).suffix.lower() == ".toml":
+        return _export_scene(args)
     try:
         write = writer_for(args.output)  # before anything is made
     except MeshFileError as exc:
-        raise UsageError(str(exc)) from None
+        raise UsageError(f"{exc}; or .toml for the whole scene") from None
     scene = load_scene(args.scene, allow_large=args.allow_large)
     out = _output(args.output, scene)
     mesh = scene.world_mesh()
     write(mesh, out)
     normals = "with point normals" if mesh.point_normals is not None else "no point normals"
     print(f"wrote {out} ({mesh.n_points} points, {mesh.n_triangles} triangles, {normals})")
+    return 0
+
+
+def _export_scene(args) -> int:
+    """``export SCENE -o NAME.toml``: the scene file, its meshes and textures in NAME-files/."""
+    from lab.scene_writer import scene_files, write_scene
+
+    scene = load_scene(args.scene, allow_large=args.allow_large)
+    out = _output(args.output, scene)
+    meshes, textures = scene_files(scene, out)
+    for path in [*meshes, *textures]:
+        if path is not None:
+            _output(path, scene)
+    write_scene(scene, out)
+    print(f"wrote {out} ({len(scene.objects)} object(s); meshes and textures in {meshes[0].parent}/)")
     return 0
 
 
@@ -278,20 +376,37 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", default="vtk.png", help="PNG to write (default: vtk.png)")
     p.set_defaults(func=cmd_reference)
 
-    p = sub.add_parser("compare", help="draw both, measure ΔE2000, write images and metrics.json",
-                       description="Writes DIR/ours.png, vtk.png, delta_e.png, side_by_side.png and metrics.json "
-                                   "and prints a one-line summary.")
+    p = sub.add_parser("compare", help="draw both, measure ΔE2000, judge, write images and metrics.json",
+                       description="Writes DIR/ours.png, vtk.png, delta_e.png, side_by_side.png and metrics.json, "
+                                   "prints a one-line summary and the verdict against the parity bars (coverage "
+                                   "mismatch ≤ 0.02 %%, ΔE2000 > 1 on ≤ 0.2 %% of shared pixels, mean ΔE2000 ≤ 0.1). "
+                                   "Exit status 0 on a pass, 1 on a FAIL, 2 on bad input.")
     _scene_args(p)
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the outputs (created if missing)")
-    p.add_argument("--fail-above", type=float, metavar="DE",
-                   help="exit 1 when the 99.9th percentile ΔE2000 exceeds DE")
+    p.add_argument("--bar", type=_bar, action="append", metavar="NAME=VALUE",
+                   help="judge against this bar too, or instead of a parity bar of that name (repeatable); names: "
+                        "coverage_mismatch, pixels_over_1 (fractions 0..1), mean, p999, max (ΔE2000), "
+                        "max_channel_diff, depth_over_1_step")
+    p.add_argument("--fail-above", type=_limit, metavar="DE",
+                   help="also fail when the 99.9th percentile ΔE2000 exceeds DE (the same as --bar p999=DE)")
+    p.add_argument("--stages", action="store_true",
+                   help="also write stages.png: both depth buffers and their difference, triangle IDs, the "
+                        "clipped wireframe (see `scanlab stages`)")
     p.add_argument("--reference", choices=["vtk-native"],
                    help="force VTK's own shading for every object (by default textbook models are checked "
                         "against colours lit in numpy or a replaced VTK shader); shows how far textbook Gouraud "
                         "is from VTK's per-pixel 'Gouraud'")
     p.set_defaults(func=cmd_compare)
 
-    p = sub.add_parser("scenes", help="list the preset scenes")
+    p = sub.add_parser("stages", help="compare what the pipelines hold before the colours: depth, triangles",
+                       description="Writes DIR/stages.png (our z-buffer beside VTK's, read back from the same "
+                                   "render, their difference in 24-bit steps; the triangle-ID image; the clipped "
+                                   "triangles as a wireframe, back faces marked) and DIR/metrics.json with 'depth'.")
+    _scene_args(p)
+    p.add_argument("--out", required=True, metavar="DIR", help="folder for the outputs (created if missing)")
+    p.set_defaults(func=cmd_stages)
+
+    p = sub.add_parser("scenes", help="list the preset scenes and the built-in shapes with their parameters")
     p.set_defaults(func=cmd_scenes)
 
     p = sub.add_parser("bench", help="frame time, memory and start-up of scanlab against VTK, in one process",
@@ -303,7 +418,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--size", type=_size, action="append", metavar="WxH", help="image size (repeatable)")
     p.add_argument("--shading", choices=SHADINGS, help="override every object's shading")
     p.add_argument("--model", choices=MODELS, help="override every object's reflection model")
-    p.add_argument("--repeat", type=int, default=15, help="timed pairs of frames per scene and size (default 15)")
+    p.add_argument("--repeat", type=_count, default=15, help="timed pairs of frames per scene and size (default 15)")
     p.add_argument("--json", metavar="FILE", help="also write every figure to FILE as JSON")
     p.add_argument("--markdown", metavar="FILE", help="also write the table to FILE (between its bench markers)")
     p.add_argument("--memory", choices=["largest", "all", "none"], default="largest",
@@ -312,16 +427,19 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--list", action="store_true", help="list the benchmark set and exit")
     p.set_defaults(func=cmd_bench)
 
-    p = sub.add_parser("export", help="write the exact triangles both renderers draw (.ply .obj .stl .vtp)",
+    p = sub.add_parser("export", help="write the exact triangles both renderers draw (.ply .obj .stl .vtp), "
+                                      "or the whole scene as a scene file (.toml)",
                        description="Writes the scene's (or shape's) triangles in world space, with point normals "
-                                   "where the format holds them (PLY, OBJ, VTP; STL has none).")
-    p.add_argument("scene", help="a scene file, preset or built-in shape such as menger:level=3")
+                                   "where the format holds them (PLY, OBJ, VTP; STL has none). With a .toml output, "
+                                   "writes the whole scene as a scene file, its meshes and textures in NAME-files/ "
+                                   "beside it: loading it gives the same scene.")
+    p.add_argument("scene", help=SCENE_HELP)
     p.add_argument("-o", "--output", required=True, help="file to write; the suffix picks the format")
     _allow_large_arg(p)
     p.set_defaults(func=cmd_export)
 
     p = sub.add_parser("info", help="counts, bounds, area, volume and closedness of a scene or shape")
-    p.add_argument("scene", help="a scene file, preset or built-in shape such as cone:segments=24")
+    p.add_argument("scene", help=SCENE_HELP)
     _allow_large_arg(p)
     p.set_defaults(func=cmd_info)
 
@@ -335,7 +453,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("fuzz", help="feed mutated preset scene files to the loader; report any traceback",
                        description="Seeded random mutations of lab/scenes/*.toml, each loaded: it must give a scene "
                                    "or one clear SceneError line. Exit 1 if any case does not.")
-    p.add_argument("--cases", type=int, default=10000, help="number of mutated files (default 10000)")
+    p.add_argument("--cases", type=_count, default=10000, help="number of mutated files (default 10000)")
     p.add_argument("--seed", type=int, default=0, help="seed; case i of seed s is always the same file (default 0)")
     p.add_argument("--save", default="out/fuzz", metavar="DIR",
                    help="folder for failing inputs, each with a .txt of what happened (default out/fuzz)")
@@ -343,10 +461,17 @@ def build_parser() -> argparse.ArgumentParser:
 
     add_exercise_parser(sub)
 
-    p = sub.add_parser("demo", help="compare every preset scene and build a page of side-by-side panels")
+    p = sub.add_parser("demo", help="compare every preset scene (or the scenes named) and build a page of panels",
+                       description="Compares each SCENE with VTK into DIR/<name>/ and writes DIR/index.html (a "
+                                   "summary table, then every panel with its scene file and the command that "
+                                   "reproduces it) and DIR/summary.json. Exit status 0 when every verdict is the "
+                                   "expected one.")
     p.add_argument("--out", default="out/demo", metavar="DIR", help="output folder (default out/demo)")
-    p.add_argument("scenes", nargs="*", help="presets to run (default: all)")
+    p.add_argument("scenes", nargs="*", metavar="SCENE",
+                   help="presets, scene files, mesh files or shapes to compare (default: every preset)")
     p.set_defaults(func=cmd_demo)
+
+    sweep_command.add_parser(sub, UsageError)
     return parser
 
 

@@ -1,35 +1,21 @@
-"""``scanlab demo``: compare every preset and build a page of side-by-side panels.
+"""``scanlab demo``: compare scenes with VTK and build a page of side-by-side panels.
 
-Writes ``OUT/<preset>/`` (the five files of ``scanlab compare``) for each preset, then
-``OUT/index.html`` (all panels with their figures) and ``OUT/summary.json``.
+Each SCENE — a preset name, a scene file, a mesh file or a built-in shape — is compared
+into ``OUT/<name>/`` (the five files of ``scanlab compare``, plus ``scene.toml``: a copy
+of its scene file, or for a shape or mesh file the scene written out by
+:mod:`lab.scene_writer`). Then ``OUT/index.html`` (:mod:`lab.app.demo_page`) and
+``OUT/summary.json``. Verdicts come from :mod:`compare.verdict`, the judge ``scanlab
+compare`` uses: exit status 0 when every scene has its expected outcome.
 """
 from __future__ import annotations
 
-import html
+import shlex
 import sys
 import time
 from pathlib import Path
 
 from lab.loading import load_scene
-from lab.presets import preset_description, preset_path
-
-def shows_a_failure(scene) -> bool:
-    """A preset made to fail against VTK: the painter's algorithm or no hidden-surface removal."""
-    return scene.render.hidden_surface != "zbuffer"
-
-
-def verdict(m: dict) -> str:
-    """"pass", "FAIL", "fails as meant" (a failure preset that fails) or "PASSES?" (one that does not)."""
-    if m.get("meant_to_fail"):
-        return "PASSES?" if passes(m) else "fails as meant"
-    return "pass" if passes(m) else "FAIL"
-
-
-def passes(m: dict) -> bool:
-    """Whether a comparison meets the parity bars (:data:`compare.metrics.PARITY_BARS`)."""
-    from compare.metrics import failed_bars
-
-    return not failed_bars(m)
+from lab.presets import preset_description, preset_names, preset_path
 
 
 def _progress(i: int, n: int, name: str, started: float) -> None:
@@ -38,50 +24,94 @@ def _progress(i: int, n: int, name: str, started: float) -> None:
     sys.stdout.flush()
 
 
-def _page(rows: list[dict]) -> str:
-    items = []
-    for m in rows:
-        de = m["delta_e_2000"]
-        v = verdict(m)
-        items.append(
-            f"<section><h2>{html.escape(m['scene'])} <span class='{'pass' if v in ('pass', 'fails as meant') else 'FAIL'}'>"
-            f"{v}</span></h2>"
-            f"<p>{html.escape(m['description'])}</p>"
-            f"<img src='{html.escape(m['scene'])}/side_by_side.png' alt='{html.escape(m['scene'])}'>"
-            f"<p class='fig'>mean ΔE2000 {de['mean']:.3f} · p99.9 {de['p999']:.2f} · max {de['max']:.2f} · "
-            f"over 1: {100 * m['pixels_over_1']:.3f} % · coverage mismatch {100 * m['coverage_mismatch']:.3f} % · "
-            f"ours {m['ours_ms']:.1f} ms, VTK {m['reference_ms']:.1f} ms</p></section>")
-    return ("<!doctype html><meta charset='utf-8'><title>scanlab demo</title>"
-            "<style>body{font-family:sans-serif;max-width:1800px;margin:2em auto;padding:0 1em}"
-            "img{max-width:100%}.pass{color:#070}.FAIL{color:#c00}.fig{font-family:monospace}</style>"
-            "<h1>scanlab: our scanline renderer beside VTK</h1>"
-            "<p>Each panel: scanlab's image, VTK's image of the same triangles, and the CIEDE2000 difference per "
-            "pixel. Bars: coverage mismatch ≤ 0.02 %, pixels with ΔE2000 &gt; 1 ≤ 0.2 %, mean ΔE2000 ≤ 0.1.</p>"
-            + "".join(items))
+def scene_name(spec: str) -> str:
+    """A name for a folder and an anchor: a preset's name, a file's stem, a shape spec made safe."""
+    if spec in preset_names():
+        return spec
+    if Path(spec).suffix and ":" not in spec:
+        return Path(spec).stem
+    return spec.replace(":", "_").replace("=", "").replace(",", "_")
 
 
-def run_demo(out: Path, names: list[str]) -> int:
-    """Compare the named presets into ``out``; print where everything is. Exit status 0/1."""
-    from compare.report import compare_scene, summary_line, write_json
+def describe(spec: str, scene) -> str:
+    """One sentence about where a scene comes from (a preset's first comment line)."""
+    if spec in preset_names():
+        return preset_description(spec)
+    path = Path(spec)
+    if path.suffix.lower() == ".toml":
+        first = path.read_text(encoding="utf-8", errors="replace").splitlines()[:1]
+        comment = first[0].lstrip("# ").strip() if first and first[0].startswith("#") else ""
+        return comment or f"the scene file {path.name}"
+    triangles = sum(o.mesh.n_triangles for o in scene.objects)
+    if path.suffix and ":" not in spec:
+        return f"the mesh file {path.name} ({triangles:,} triangles), framed with one headlight"
+    return f"the built-in shape {spec} ({triangles:,} triangles), framed with one headlight"
+
+
+def scene_copy(spec: str, scene, folder: Path) -> str:
+    """Put the scene's file beside its panel as ``scene.toml``; return a note on what it is.
+
+    A preset or scene file is copied byte for byte (relative paths in it still point
+    next to the original); a shape or mesh file is written out with its mesh."""
+    from lab.atomic import atomic_file
+    from lab.scene_writer import write_scene
+
+    source = preset_path(spec) if spec in preset_names() else Path(spec)
+    if source.suffix.lower() == ".toml":
+        with atomic_file(folder / "scene.toml") as f:
+            f.write(source.read_bytes())
+        return f"a copy of {source}"
+    write_scene(scene, folder / "scene.toml")
+    return "written by scanlab export (its mesh in scene-files/)"
+
+
+def reproduce_command(spec: str, out: Path) -> str:
+    """The command that makes this panel again, from the folder ``demo`` ran in."""
+    path = Path(spec)
+    shown = spec if spec in preset_names() or not path.exists() else str(path.resolve())
+    return shlex.join(["scanlab", "compare", shown, "--out", str(out)])
+
+
+def png_size(path: Path) -> list[int]:
+    """[width, height] of a PNG file, from its header."""
+    from PIL import Image
+
+    with Image.open(path) as im:
+        return list(im.size)
+
+
+def run_demo(out: Path, specs: list[str]) -> int:
+    """Compare every scene of ``specs`` into ``out``; print where everything is. Exit status 0/1."""
+    from compare.comparison import run_comparison
+    from compare.report import summary_line, write_json
+    from lab.app.demo_page import demo_page
     from lab.atomic import write_text
 
     out.mkdir(parents=True, exist_ok=True)
-    rows, started = [], time.perf_counter()
-    print(f"scanlab demo: comparing {len(names)} scenes with VTK (the first run compiles the renderer's kernels)")
-    for i, name in enumerate(names):
-        _progress(i, len(names), name, started)
-        scene = load_scene(preset_path(name))
-        m = compare_scene(scene, out / name, name=name)
-        m["description"] = preset_description(name)
-        m["meant_to_fail"] = shows_a_failure(scene)
+    rows, names, started = [], set(), time.perf_counter()
+    print(f"scanlab demo: comparing {len(specs)} scenes with VTK (the first run compiles the renderer's kernels)")
+    for i, spec in enumerate(specs):
+        name = scene_name(spec)
+        while name in names:
+            name += "-2"
+        names.add(name)
+        _progress(i, len(specs), name, started)
+        scene = load_scene(spec)
+        result = run_comparison(scene, name=name)
+        result.write(out / name)
+        m = dict(result.metrics)
+        m.update(description=describe(spec, scene), settings=result.settings, spec=spec, panel_size=png_size(
+                     out / name / "side_by_side.png"),
+                 scene_file=f"{name}/scene.toml", scene_file_note=scene_copy(spec, scene, out / name),
+                 command=reproduce_command(spec, out / name))
         rows.append(m)
-    _progress(len(names), len(names), "done", started)
+    _progress(len(specs), len(specs), "done", started)
     print()
     for m in rows:
-        print(f"  {verdict(m):<15} {summary_line(m)}")
+        print(f"  {m['verdict']['status']:<15} {summary_line(m)}")
     write_json(out / "summary.json", {"scenes": rows})
     page = out / "index.html"
-    write_text(page, _page(rows))
+    write_text(page, demo_page(rows))
     print(f"\nside-by-side panels: {out}/<scene>/side_by_side.png")
     print(f"all of them on one page: {page.resolve()}")
-    return 0 if all(verdict(m) in ("pass", "fails as meant") for m in rows) else 1
+    return 0 if all(m["verdict"]["ok"] for m in rows) else 1

@@ -23,7 +23,7 @@ import numpy as np
 
 from lab.atomic import atomic_file
 from lab.mesh import Mesh
-from lab.meshfiles._common import MeshFileError
+from lab.meshfiles.validate import MeshFileError
 
 
 def write_ply(mesh: Mesh, path) -> None:

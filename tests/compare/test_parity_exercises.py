@@ -8,7 +8,8 @@ import pytest
 from compare.metrics import measure
 from compare.reference import render_reference
 from compare.metrics import failed_bars
-from lab.loading import load_scene, make_shape
+from lab.framing import make_shape
+from lab.loading import load_scene
 from renderer import render
 
 

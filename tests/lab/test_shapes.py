@@ -13,7 +13,7 @@ import time
 import numpy as np
 import pytest
 
-from lab.loading import make_shape
+from lab.framing import make_shape
 from lab.normals import face_normals
 from lab.shapes import PHI, SHAPES, cone, cube, cylinder, icosahedron, icosahedron_fractal, icosphere, menger
 

@@ -1,8 +1,9 @@
 """Specification of texture coordinates (``Mesh.tcoords``) wherever a mesh is made.
 
 - readers give VTK's active texture coordinates (compared with ``pyvista.read``: same
-  points, same triangles as ``pv.read(...).triangulate()``, same tcoords), or None;
-- writers write them (PLY ``s t``, OBJ ``vt``, VTP ``TCoords``) and read back unchanged;
+  points, VTK's cells triangulated as its mapper draws them, same tcoords), or None;
+- writers write them (PLY ``s t``, OBJ ``vt``, VTP ``TCoords``) and read back unchanged
+  (to float32 where VTK's reader keeps float32: PLY, OBJ ``vt``);
 - normals keep them (split points copy their source point's);
 - shapes: ``icosphere``, ``cylinder`` and ``cone`` with ``uv=1`` (seams, poles, same surface).
 """
@@ -16,11 +17,13 @@ import pyvista as pv
 import vtk
 
 from lab import shapes
-from lab.loading import make_shape
+from lab.framing import make_shape
 from lab.measure import enclosed_volume, surface_area
-from lab.mesh import Mesh
+from lab.mesh import Mesh, fan_triangles
 from lab.meshfiles import MeshFileError, read_mesh, write_mesh
 from lab.normals import NORMAL_MODES, split_at_creases, with_normals
+
+from ..mesh_files import vtk_triangles, vtk_write
 
 GLOBE = Path(pv.__file__).parent / "examples" / "globe.vtk"
 
@@ -39,10 +42,9 @@ def textured_sphere():
 def assert_like_pyvista(path):
     """Our reading of ``path`` has pyvista's points, triangles and active tcoords."""
     ref = pv.read(path)
-    tri = ref.triangulate()
     got = read_mesh(path)
     np.testing.assert_array_equal(got.points, np.asarray(ref.points, dtype=np.float64))
-    np.testing.assert_array_equal(got.triangles, tri.faces.reshape(-1, 4)[:, 1:])
+    np.testing.assert_array_equal(got.triangles, vtk_triangles(ref))
     assert ref.active_texture_coordinates is not None
     np.testing.assert_array_equal(got.tcoords, np.asarray(ref.active_texture_coordinates, dtype=np.float64))
     assert got.tcoords.dtype == np.float64 and got.tcoords.shape == (got.n_points, 2)
@@ -53,14 +55,6 @@ def test_globe_reads_like_pyvista():
     assert GLOBE.is_file()
     mesh = assert_like_pyvista(GLOBE)
     assert mesh.n_points == 540 and mesh.tcoords.min() >= 0 and mesh.tcoords.max() <= 1
-
-
-def vtk_write(writer, mesh, path, **setters):
-    writer.SetInputData(mesh)
-    writer.SetFileName(str(path))
-    for name, value in setters.items():
-        getattr(writer, name)(*([] if value is None else [value]))
-    assert writer.Write() == 1
 
 
 LEGACY = {"ascii_5.1": {"SetFileTypeToASCII": None}, "binary_5.1": {"SetFileTypeToBinary": None},
@@ -125,14 +119,15 @@ def test_ply_tcoord_names_like_vtk(tmp_path, names):
         np.testing.assert_allclose(got, ref, rtol=1e-7)  # VTK keeps float32, we keep the file's doubles
 
 
-def test_ply_face_texcoord_lists_are_ignored(tmp_path):
-    """Per-corner texcoord lists make VTK split points; we keep the points and give no tcoords."""
+def test_ply_face_texcoord_lists_as_vtk_reads_them(tmp_path):
+    """Per-corner ``texcoord`` lists of faces: VTK's PLY reader turns them into point texture
+    coordinates; we take what it gives."""
     text = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
             "element face 1\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\n"
             "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 6 0 0 1 0 0 1\n")
     (tmp_path / "f.ply").write_text(text)
-    mesh = read_mesh(tmp_path / "f.ply")
-    assert mesh.tcoords is None and mesh.n_points == 3
+    mesh = assert_like_pyvista(tmp_path / "f.ply")
+    np.testing.assert_array_equal(mesh.tcoords, [[0, 0], [1, 0], [0, 1]])
 
 
 def test_obj_written_by_vtk(tmp_path):
@@ -141,30 +136,31 @@ def test_obj_written_by_vtk(tmp_path):
     assert_like_pyvista(tmp_path / "s.obj")
 
 
-OBJ_SQUARE = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 5 5 5\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5\nvn 0 0 1\n"
+OBJ_SQUARE = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 5 5 5\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0\n"
 
 
-@pytest.mark.parametrize("faces, expected", [
-    ("f 1/1 2/2 3/3 4/4\n", [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]),            # point 5 unused: 0, 0
-    ("f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n", [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]),
-    ("f -5/-5 -4/-4 -3/-3\nf 1/1 3/3 4/5\n", [[0, 0], [1, 0], [1, 1], [0.5, 0], [0, 0]]),  # vt u only: v = 0
-    ("f 1/1 2/2 3/3\nf 1/4 3/3 4/4\n", None),                                     # point 1 has vt 1 and vt 4
-    ("f 1/1 2/2 3/3\nf 1 3 4\n", None),                                           # a corner without vt
-    ("f 1//1 2//1 3//1 4//1\n", None),                                            # no vt at all
+@pytest.mark.parametrize("faces, points", [
+    ("f 1/1 2/2 3/3 4/4\n", 5),                          # each corner's vt index is its v index: v rows kept
+    ("vn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n", 6),  # vn 1 at every corner: a point per corner
+    ("f 1/1 2/2 3/3\nf 1/4 3/3 4/4\n", 6),              # point 1 with vt 1 and vt 4: a UV seam
 ])
-def test_obj_tcoords_only_when_each_point_has_one(tmp_path, faces, expected):
+def test_obj_tcoords_as_vtk_splits_points(tmp_path, faces, points):
+    """Where a face corner's vt (or vn) index differs from its v index, vtkOBJReader gives
+    every face corner its own point; each keeps its own (s, t)."""
     (tmp_path / "sq.obj").write_text(OBJ_SQUARE + faces)
-    mesh = read_mesh(tmp_path / "sq.obj")
-    assert mesh.n_points == 5  # never split
-    if expected is None:
-        assert mesh.tcoords is None
-    else:
-        np.testing.assert_array_equal(mesh.tcoords, expected)
+    mesh = assert_like_pyvista(tmp_path / "sq.obj")
+    assert mesh.n_points == points
+    faces_ = [line.split()[1:] for line in faces.splitlines() if line.startswith("f")]
+    vt = np.array([int(c.split("/")[1]) - 1 for f in faces_ for c in f])
+    offsets = np.concatenate([[0], np.cumsum([len(f) for f in faces_])])
+    corner_of_triangles = fan_triangles(offsets, np.arange(len(vt)))  # the face corner behind each triangle corner
+    table = np.array([[0, 0], [1, 0], [1, 1], [0, 1], [0.5, 0]])
+    np.testing.assert_array_equal(mesh.tcoords[mesh.triangles], table[vt[corner_of_triangles]])
 
 
 def test_obj_tcoord_index_out_of_range(tmp_path):
     (tmp_path / "bad.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/9\n")
-    with pytest.raises(MeshFileError, match="texture coordinate 9"):
+    with pytest.raises(MeshFileError, match="line 5: a face refers to texture coordinate 9, but there are 1"):
         read_mesh(tmp_path / "bad.obj")
 
 
@@ -239,20 +235,32 @@ def textured(normals):
     return with_normals(mesh, "radial") if normals else mesh
 
 
+FLOAT32 = {".ply": ("points", "normals", "tcoords"), ".obj": ("normals", "tcoords"), ".vtp": ()}
+"""What VTK's reader of each format keeps as float32: vtkPLYReader everything, vtkOBJReader
+``vt`` and ``vn`` (its points are doubles), vtkXMLPolyDataReader nothing (the file's Float64)."""
+
+
 @pytest.mark.parametrize("normals", [False, True], ids=["no_normals", "normals"])
 @pytest.mark.parametrize("suffix", [".ply", ".obj", ".vtp"])
 def test_round_trip(tmp_path, suffix, normals):
+    """What we write reads back the same: same points, triangles and texture coordinates,
+    exact where VTK's reader keeps doubles and rounded to float32 where it keeps float32."""
     mesh = textured(normals)
     path = tmp_path / f"m{suffix}"
     write_mesh(mesh, path)
     back = read_mesh(path)
-    np.testing.assert_array_equal(back.points, mesh.points)
+
+    def kept(name, values):
+        return values.astype(np.float32).astype(np.float64) if name in FLOAT32[suffix] else values
+
+    np.testing.assert_array_equal(back.points, kept("points", mesh.points))
     np.testing.assert_array_equal(back.triangles, mesh.triangles)
-    np.testing.assert_array_equal(back.tcoords, mesh.tcoords)  # exact: doubles, 17 digits
-    assert (back.point_normals is None) == (not normals)
-    # ... and VTK reads the same texture coordinates (its PLY reader rounds them to float32)
-    ref = pv.read(path).active_texture_coordinates
-    np.testing.assert_allclose(ref, mesh.tcoords, rtol=1e-7, atol=1e-7)
+    np.testing.assert_array_equal(back.tcoords, kept("tcoords", mesh.tcoords))
+    if normals:
+        unit = kept("normals", mesh.point_normals)
+        np.testing.assert_allclose(back.point_normals, unit / np.linalg.norm(unit, axis=1, keepdims=True), atol=1e-15)
+    else:
+        assert back.point_normals is None
     assert pv.read(path).n_points == mesh.n_points
 
 

@@ -141,7 +141,7 @@ def test_choice_names_the_valid_strings():
     assert table(s="phong").choice("s", "flat", ("flat", "gouraud", "phong")) == "phong"
     assert table().choice("s", "flat", ("flat", "phong")) == "flat"
     assert error(lambda: table(s="gourad").choice("s", "flat", ("flat", "gouraud"))) == \
-        "scene.toml: camera.s: 'gourad' is not one of flat, gouraud"
+        "scene.toml: camera.s: 'gourad' is not one of flat, gouraud (did you mean 'gouraud'?)"
     assert error(lambda: table(s=["flat"]).choice("s", "flat", ("flat", "gouraud"))) == \
         "scene.toml: camera.s: ['flat'] is not one of flat, gouraud"
 

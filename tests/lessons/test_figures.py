@@ -44,3 +44,19 @@ def test_separate_specular_figure_is_written(tmp_path):
     m = separate_specular_figure(tmp_path)
     assert (tmp_path / "separate-specular.png").stat().st_size > 10_000
     assert m["pixels_over_1"] > 0.1 and m["coverage_mismatch"] == 0.0
+
+
+def test_making_the_figures_again_gives_the_same_bytes_as_the_ones_in_git(tmp_path):
+    """No timings (or anything else that changes between runs) inside a figure: two builds are identical,
+    and identical to lessons/figures/, so `scanlab lessons figures` leaves git clean."""
+    from pathlib import Path
+
+    from lessons.figures import build_figures
+
+    kept = Path(__file__).resolve().parents[2] / "lessons" / "figures"
+    names = sorted(build_figures(tmp_path / "a"))
+    build_figures(tmp_path / "b")
+    for name in names:
+        first = (tmp_path / "a" / f"{name}.png").read_bytes()
+        assert first == (tmp_path / "b" / f"{name}.png").read_bytes(), name
+        assert first == (kept / f"{name}.png").read_bytes(), f"{name}.png differs from git: run scanlab lessons figures"

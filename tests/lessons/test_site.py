@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from lab.app.lessons_site import LESSONS
+from lab.app.lesson_site.build import LESSONS
 
 from ..browser import broken_images, open_browser, watch
 

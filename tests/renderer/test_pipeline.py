@@ -179,3 +179,57 @@ def test_vtk_model_clamps_the_specular_power_to_128_as_vtk_does():
     at_1000 = render(replace(scene, objects=objs[:1]))
     at_128 = render(replace(scene, objects=(replace(shiny, material=replace(shiny.material, specular_power=128.0)),)))
     assert np.array_equal(at_1000.rgb, at_128.rgb)
+
+
+# --------------------------------------------------------------------------- the stage buffers
+def test_render_stages_returns_the_frame_render_returns_and_its_buffers():
+    """render_stages gives render's frame, bit for bit, and the z-buffer it came from."""
+    from renderer import render_stages
+
+    scene = tiny_scene()
+    frame, stages = render_stages(scene)
+    plain = render(scene)
+    assert np.array_equal(frame.rgb, plain.rgb) and np.array_equal(frame.depth, plain.depth)
+    assert np.array_equal(stages.depth, frame.depth)
+    assert np.array_equal(stages.triangle >= 0, frame.coverage)  # all opaque: coverage = a triangle won
+
+
+def test_the_triangle_id_image_names_the_source_triangle_that_won():
+    """A unit quad (triangles 0 and 1, split along the diagonal from corner 0 to corner 2) seen head on: the
+    lower-right half of the image belongs to triangle 0, the upper-left half to triangle 1."""
+    from renderer import render_stages
+
+    _, stages = render_stages(upper_quad_scene())
+    ids = stages.triangle
+    assert set(np.unique(ids)) == {-1, 0, 1}
+    rows, cols = np.nonzero(ids >= 0)
+    u = (cols - cols.min()) / (cols.max() - cols.min())  # 0 at the left, 1 at the right
+    v = (rows.max() - rows) / (rows.max() - rows.min())  # 0 at the bottom, 1 at the top (y up)
+    first = ids[rows, cols] == 0
+    assert np.all(v[first] <= u[first] + 0.05) and np.all(v[~first] >= u[~first] - 0.05)
+    assert 0.45 < first.mean() < 0.55
+
+
+def test_back_faces_are_flagged_as_the_rasteriser_sees_them():
+    """The cube seen from outside: every clipped triangle is front or back, half and half; culled back faces
+    leave the triangle-ID image but stay flagged."""
+    import dataclasses
+
+    from renderer import render_stages
+
+    scene = load_scene("cube")
+    _, stages = render_stages(scene)
+    assert stages.front.sum() == 6 and len(stages.front) == 12
+    assert set(np.unique(stages.triangle[stages.triangle >= 0])) <= set(stages.clip_source[stages.front])
+    culled = dataclasses.replace(scene, render=dataclasses.replace(scene.render, cull_backfaces=True))
+    frame, kept = render_stages(culled)
+    assert kept.front.sum() == 6 and np.array_equal(frame.coverage, kept.triangle >= 0)
+
+
+def test_a_triangle_cut_by_the_near_plane_becomes_several_clipped_triangles():
+    from renderer import render_stages
+
+    _, stages = render_stages(load_scene("near-plane"))
+    assert len(stages.tri_window) > len(stages.geometry.triangles) - np.count_nonzero(
+        np.bincount(stages.clip_source, minlength=len(stages.geometry.triangles)) == 0)
+    assert np.bincount(stages.clip_source).max() >= 2

@@ -80,7 +80,7 @@ class Comparison:
     def write(self, folder: Path, stem: str) -> list[Path]:
         """``stem-panel.png`` (yours by scanlab | reference by VTK | ΔE) and ``stem-vtk.png``
         (yours drawn by VTK); returns the paths."""
-        from compare.images import side_by_side_figure
+        from compare.images import PanelText, side_by_side_figure
         from compare.metrics import compare_frames, coverage_masks
         from lab.png import write_png
 
@@ -89,7 +89,7 @@ class Comparison:
         shared, mismatch = coverage_masks(self.ours_student, self.vtk_reference)
         panel, vtk = folder / f"{stem}-panel.png", folder / f"{stem}-vtk.png"
         side_by_side_figure(self.ours_student.rgb, self.vtk_reference.rgb, de, mismatch, self.metrics, panel,
-                            title=self.call, shared=shared, labels=("yours (scanlab)", "reference (VTK)"))
+                            PanelText(title=self.call, labels=("yours (scanlab)", "reference (VTK)")), shared=shared)
         write_png(vtk, self.vtk_student.rgb)
         return [panel, vtk]
 

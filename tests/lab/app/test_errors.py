@@ -4,8 +4,10 @@ process (``lab.app.cli.main``), and a few cases again as real ``python -m lab`` 
 """
 from __future__ import annotations
 
+import base64
 import hashlib
 import os
+import struct
 import subprocess
 import sys
 from dataclasses import dataclass, field
@@ -66,6 +68,18 @@ def stl(points=TRI) -> str:
 
 
 EMPTY_BINARY_STL = b"scanlab test".ljust(80, b" ") + (0).to_bytes(4, "little")
+SHORT_BINARY_STL = b"scanlab test".ljust(80, b" ") + (5).to_bytes(4, "little") + bytes(50)
+
+# MeshLab-style: face lines carry values (here per-corner texture coordinates) the header does not declare
+MESHLAB_PLY = ply(points=TRI + "1 1 0\n", n_points=4, n_faces=2,
+                  faces="3 0 1 2 6 0.599829 0.1 0.2 0.3 0.4 0.5\n3 0 2 3 6 0.599829 0.1 0.2 0.3 0.4 0.5\n")
+STRIPS_PLY = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+              "element tristrips 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
+              "4 0 1 2 3\n")
+# A binary PLY cut short inside its face list (this crashed VTK's reader)
+SHORT_BINARY_PLY = ("ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n").encode() \
+    + bytes(36) + b"\x03" + struct.pack("<2i", 0, 1)
 
 
 def vtk(points=TRI, polys="POLYGONS 1 4\n3 0 1 2\n", point_data="") -> str:
@@ -74,7 +88,13 @@ def vtk(points=TRI, polys="POLYGONS 1 4\n3 0 1 2\n", point_data="") -> str:
 
 
 def vtp(points="0 0 0 1 0 0 0 1 0", conn="0 1 2", offsets="3", n_polys=1, point_data="") -> str:
+    """A VTK XML PolyData file; ``points`` as text, or a list of numbers for base64 binary
+    (VTK's XML reader parses neither "nan" nor "inf" in ASCII arrays, only in binary ones)."""
     def array(name, values, comps=1, kind="Int32"):
+        if not isinstance(values, str):
+            raw = struct.pack(f"<{len(values)}f", *values)
+            return (f'<DataArray type="{kind}" Name="{name}" NumberOfComponents="{comps}" format="binary">'
+                    f"{base64.b64encode(struct.pack('<I', len(raw)) + raw).decode()}</DataArray>")
         return (f'<DataArray type="{kind}" Name="{name}" NumberOfComponents="{comps}" format="ascii">'
                 f"{values}</DataArray>")
 
@@ -209,6 +229,16 @@ CASES = [
     toml_case("unknown-csg-op", scene(object={"shape": None, "csg": '{ op = "xor", children = [] }'}),
               "object[0].csg", "unknown op 'xor'", "union, difference, intersection"),
     toml_case("two-sources", scene(object={"mesh": '"a.ply"'}), "object[0].mesh", "exactly one"),
+    toml_case("matrix-and-scale", scene(object={"scale": "[1, 1, 1]", "matrix": "[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]"}),
+              "object[0].matrix", "not both"),
+    toml_case("matrix-three-rows", scene(object={"matrix": "[[1,0,0,0],[0,1,0,0],[0,0,1,0]]"}), "object[0].matrix",
+              "4 rows of 4 numbers"),
+    toml_case("matrix-row-short", scene(object={"matrix": "[[1,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]"}),
+              "object[0].matrix", "4 numbers"),
+    toml_case("matrix-projective", scene(object={"matrix": "[[1,0,0,0.5],[0,1,0,0],[0,0,1,0],[0,0,0,1]]"}),
+              "object[0].matrix", "affine"),
+    toml_case("matrix-singular", scene(object={"matrix": "[[0,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]"}),
+              "object[0].matrix", "flattens"),
     # --- camera
     toml_case("camera-position-is-focal-point", scene(camera={"position": "[0, 0, 0]"}), "camera.position",
               "focal_point"),
@@ -231,16 +261,23 @@ CASES = [
     Case("mesh-missing", render(), ["{dir}/scene.toml", "object[0].mesh", "{dir}/none.ply", "No such file"],
          {"scene.toml": mesh_scene("none.ply")}),
     Case("mesh-is-a-folder", render(), ["{dir}/scene.toml", "object[0].mesh", "{dir}/dir.ply",
-                                        "not a regular file"], {"scene.toml": mesh_scene("dir.ply"), "dir.ply/": ""}),
+                                        "is a folder"],
+         {"scene.toml": mesh_scene("dir.ply"), "dir.ply/": ""}),
+    Case("mesh-is-a-folder-without-suffix", render(), ["{dir}/scene.toml", "object[0].mesh", "{dir}/models",
+                                                       "is a folder"],
+         {"scene.toml": mesh_scene("models"), "models/": ""}),
+    Case("mesh-pyvista-example-unknown", render(), ["object[0].mesh", "no example file 'globe.vtkk'",
+                                                    "did you mean 'globe.vtk'", "ant.ply"],
+         {"scene.toml": mesh_scene("pyvista-examples:globe.vtkk")}),
     Case("mesh-name-too-long", render(), ["{dir}/scene.toml", "object[0].mesh", "File name too long"],
          {"scene.toml": mesh_scene("x" * 5000 + ".ply")}),
     mesh_case("mesh-unknown-suffix", "m.txt", "hello", "unknown mesh file suffix", ".ply, .obj"),
     mesh_case("mesh-ply-empty-file", "m.ply", "", "not a PLY file"),
     mesh_case("mesh-ply-not-a-mesh", "m.ply", "hello, world\n", "not a PLY file"),
-    mesh_case("mesh-obj-not-a-mesh", "m.obj", "v 1 2\n", "line 1", "fewer than 3 coordinates"),
+    mesh_case("mesh-obj-not-a-mesh", "m.obj", "v 1 2\n", "line 1", "a vertex needs 3 numbers"),
     mesh_case("mesh-stl-not-a-mesh", "m.stl", "hello", "not an STL file"),
-    mesh_case("mesh-vtk-not-a-mesh", "m.vtk", "hello\n", "m.vtk"),
-    mesh_case("mesh-vtp-not-a-mesh", "m.vtp", "hello", "not valid XML"),
+    mesh_case("mesh-vtk-not-a-mesh", "m.vtk", "hello\n", "not a legacy VTK file"),
+    mesh_case("mesh-vtp-not-a-mesh", "m.vtp", "hello", "not valid VTK XML"),
     mesh_case("mesh-ply-no-triangles", "m.ply", ply(faces="", n_faces=0), "no triangles"),
     mesh_case("mesh-obj-no-triangles", "m.obj", obj(faces=""), "no triangles"),
     mesh_case("mesh-stl-no-triangles", "m.stl", EMPTY_BINARY_STL, "no triangles"),
@@ -250,20 +287,38 @@ CASES = [
     mesh_case("mesh-obj-nan", "m.obj", obj(points="0 0 0\n1 inf 0\n0 1 0"), "NaN or infinity"),
     mesh_case("mesh-stl-nan", "m.stl", stl(points="0 0 0\n1 0 nan\n0 1 0"), "NaN or infinity"),
     mesh_case("mesh-vtk-nan", "m.vtk", vtk(points="0 0 0 1 0 0 nan 1 0\n"), "NaN or infinity"),
-    mesh_case("mesh-vtp-nan", "m.vtp", vtp(points="0 0 0 1 0 0 0 1 inf"), "NaN or infinity"),
+    mesh_case("mesh-vtp-nan", "m.vtp", vtp(points=[0, 0, 0, 1, 0, 0, 0, 1, float("inf")]), "NaN or infinity"),
     mesh_case("mesh-ply-index-out-of-range", "m.ply", ply(faces="3 0 1 7\n"), "index 7 out of range"),
     mesh_case("mesh-obj-index-out-of-range", "m.obj", obj(faces="f 1 2 9\n"), "vertex 9", "there are 3"),
     mesh_case("mesh-vtk-index-out-of-range", "m.vtk", vtk(polys="POLYGONS 1 4\n3 0 1 3\n"),
               "index 3 out of range"),
     mesh_case("mesh-vtp-index-out-of-range", "m.vtp", vtp(conn="0 1 5"), "index 5 out of range"),
     mesh_case("mesh-vtk-normals-wrong-count", "m.vtk",
-              vtk(point_data="POINT_DATA 2\nNORMALS n float\n0 0 1 0 0 1\n"), "2 normals for 3 points"),
-    mesh_case("mesh-vtp-normals-wrong-count", "m.vtp", vtp(point_data=VTP_TWO_NORMALS), "2 normals for 3 points"),
+              vtk(point_data="POINT_DATA 2\nNORMALS n float\n0 0 1 0 0 1\n"), "point data",
+              "one value per point"),
+    mesh_case("mesh-vtp-normals-wrong-count", "m.vtp", vtp(point_data=VTP_TWO_NORMALS), 'point data array "n"',
+              "too short"),
     mesh_case("mesh-vtk-tcoords-wrong-count", "m.vtk",
-              vtk(point_data="POINT_DATA 2\nTEXTURE_COORDINATES t 2 float\n0 0 1 0\n"),
-              "2 texture coordinates for 3 points"),
-    mesh_case("mesh-vtp-tcoords-wrong-count", "m.vtp", vtp(point_data=VTP_TWO_TCOORDS),
-              "2 texture coordinates for 3 points"),
+              vtk(point_data="POINT_DATA 2\nTEXTURE_COORDINATES t 2 float\n0 0 1 0\n"), "point data",
+              "one value per point"),
+    mesh_case("mesh-vtp-tcoords-wrong-count", "m.vtp", vtp(point_data=VTP_TWO_TCOORDS), 'point data array "t"',
+              "too short"),
+    # --- what VTK's readers would misread or crash on, refused before or after they read
+    mesh_case("mesh-ply-meshlab-extra-face-values", "m.ply", MESHLAB_PLY, "line 14", "face 1 has 11 values",
+              "declares 4"),
+    mesh_case("mesh-ply-face-line-short", "m.ply", ply(faces="3 0 1\n"), "line 13", "face 1 has 3 values"),
+    mesh_case("mesh-ply-triangle-strips", "m.ply", STRIPS_PLY, "triangle strips", "tristrips", "not supported"),
+    mesh_case("mesh-ply-binary-cut-short", "m.ply", SHORT_BINARY_PLY, "ends inside element 'face'", "cut short"),
+    mesh_case("mesh-ply-unknown-type", "m.ply", ply().replace("property float y", "property real y"),
+              "header line 5", "unknown PLY property type 'real'"),
+    mesh_case("mesh-obj-tcoord-index-out-of-range", "m.obj", obj(faces="vt 0 0\nf 1/1 2/1 3/99999999\n"),
+              "line 5", "texture coordinate 99999999", "there are 1"),
+    mesh_case("mesh-obj-normal-index-out-of-range", "m.obj", obj(faces="vn 0 0 1\nf 1//1 2//1 3//2\n"),
+              "line 5", "normal 2", "there are 1"),
+    mesh_case("mesh-obj-polygon-not-a-fan", "m.obj",
+              obj(points="0 0 0\n2 0 0\n1 0.5 0\n2 2 0\n0 2 0", faces="f 2 3 4 5 1\n"),
+              "polygon 1 (5 vertices) is concave where a fan from its first vertex fails"),
+    mesh_case("mesh-stl-binary-cut-short", "m.stl", SHORT_BINARY_STL, "cut short", "5 triangles"),
     Case("texture-missing", render(), ["{dir}/scene.toml", "object[0].texture", "{dir}/none.png", "No such file"],
          {"scene.toml": scene(object={**TEXTURED, "texture": '"none.png"'})}),
     Case("texture-name-too-long", render(), ["{dir}/scene.toml", "object[0].texture", "File name too long"],
@@ -272,7 +327,7 @@ CASES = [
                                             "not an image"],
          {"scene.toml": scene(object={**TEXTURED, "texture": '"t.png"'}), "t.png": "not a png"}),
     Case("texture-is-a-folder", render(), ["{dir}/scene.toml", "object[0].texture", "{dir}/t.png",
-                                           "not a regular file"],
+                                           "is a folder"],
          {"scene.toml": scene(object={**TEXTURED, "texture": '"t.png"'}), "t.png/": ""}),
     toml_case("texture-without-tcoords", scene(object={"texture": '"t.png"'}), "object[0].texture",
               "no texture coordinates"),
@@ -290,12 +345,30 @@ CASES = [
          {"scene.toml": scene()}),
     Case("cli-no-such-scene", ["render", "{dir}/nope.toml", "-o", "{dir}/out/x.png"],
          ["{dir}/nope.toml", "cannot read"]),
-    Case("cli-scene-is-a-folder", ["render", "{dir}", "-o", "{dir}/x.png"], ["{dir}", "not a regular file"]),
+    Case("cli-scene-is-a-folder", ["render", "{dir}", "-o", "{dir}/x.png"], ["{dir}", "is a folder"]),
+    Case("cli-scene-toml-is-a-folder", ["render", "{dir}/s.toml", "-o", "{dir}/x.png"], ["{dir}/s.toml", "is a folder"],
+         {"s.toml/": ""}),
+    Case("cli-mesh-file-scene-broken", ["render", "{dir}/m.obj", "-o", "{dir}/x.png"], ["{dir}/m.obj", "line 1"],
+         {"m.obj": "v 1 2\n"}),
+    Case("cli-mesh-file-scene-unknown-suffix", ["render", "{dir}/m.txt", "-o", "{dir}/x.png"],
+         ["{dir}/m.txt", "unknown mesh file suffix"], {"m.txt": "hello"}),
+    Case("cli-bench-repeat-zero", ["bench", "cube", "--repeat", "0"], ["--repeat", "at least 1"]),
+    Case("cli-bench-repeat-not-a-number", ["bench", "cube", "--repeat", "x"], ["--repeat", "whole number"]),
+    Case("cli-fuzz-cases-negative", ["fuzz", "--cases", "-5", "--save", "{dir}/f"], ["--cases", "at least 1"]),
+    Case("cli-fail-above-nan", ["compare", "cube", "--out", "{dir}/o", "--fail-above", "nan"],
+         ["--fail-above", "finite"]),
+    Case("cli-bar-unknown", ["compare", "cube", "--out", "{dir}/o", "--bar", "maen=0.1"],
+         ["--bar", "unknown bar 'maen'", "did you mean 'mean'"]),
+    Case("cli-bar-not-a-number", ["compare", "cube", "--out", "{dir}/o", "--bar", "mean=lots"],
+         ["--bar", "expected a number"]),
+    Case("cli-demo-scene-file-broken", ["demo", "--out", "{dir}/out", "{dir}/scene.toml"],
+         ["{dir}/scene.toml", "camera.view_angel"], {"scene.toml": scene(camera={"view_angel": "30"})}),
+    Case("cli-stages-missing-out", ["stages", "cube"], ["scanlab stages", "required: --out"]),
     Case("cli-scene-name-too-long", ["render", "x" * 5000, "-o", "{dir}/x.png"], ["xxxxxxxx", "cannot read: File name too long"]),
     Case("cli-unknown-shape-param", ["render", "cube:sides=3", "-o", "{dir}/out/x.png"], ["cube:sides=3", "sides"]),
     Case("cli-demo-unknown-preset", ["demo", "--out", "{dir}/out", "fill-rul"], ["fill-rul", "fill-rule"]),
     Case("cli-export-unknown-format", ["export", "{dir}/scene.toml", "-o", "{dir}/out/x.dae"],
-         ["{dir}/out/x.dae", ".ply, .obj, .stl, .vtp"], {"scene.toml": scene()}),
+         ["{dir}/out/x.dae", ".ply, .obj, .stl, .vtp", ".toml"], {"scene.toml": scene()}),
     # --- outputs that would overwrite an input, or cannot be made
     Case("out-overwrites-scene", ["render", "{dir}/scene.toml", "-o", "{dir}/scene.toml"],
          ["{dir}/scene.toml", "would overwrite the input"], {"scene.toml": scene()}),

@@ -14,8 +14,8 @@ from lab.validation import SceneError
 @pytest.mark.parametrize("tree, message", [
     ({"op": "intersection", "children": [
         {"op": "difference", "children": [{"primitive": "box"}, {"primitive": "spere", "radius": 1.0}]}]},
-     "csg.children[0].children[1].primitive: unknown primitive 'spere'; valid: box, sphere, cylinder, cone, "
-     "halfspaces"),
+     "csg.children[0].children[1].primitive: unknown primitive 'spere' (did you mean 'sphere'?); valid: box, sphere, "
+     "cylinder, cone, halfspaces"),
     ({"op": "union", "children": [{"primitive": "box"}, {"primitive": "sphere", "radius": -1}]},
      "csg.children[1].radius: -1 is outside (0, 1e+15]"),
     ({"op": "union", "children": [{"primitive": "sphere", "radus": 1}]},
