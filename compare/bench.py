@@ -46,7 +46,7 @@ def _summary(times: list[float]) -> dict:
 
 def time_frames(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
     """Frame times (ms) of both renderers on ``scene``, alternating in pairs; see the module
-    docstring. Returns ``{"ours": {median, min, max}, "vtk": {...}, "ratio": median of ours/VTK}``."""
+    docstring. Returns ``{"ours": {median, min, max}, "reference": {...}, "ratio": median of ours/VTK}``."""
     from renderer import render
 
     pl = build_plotter(scene)
@@ -65,17 +65,17 @@ def time_frames(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
         ours, vtk, ratios = [], [], []
         for i in range(repeat):
             pair = {}
-            for name, frame in ((("ours", ours_frame), ("vtk", vtk_frame)) if i % 2 == 0 else
-                                (("vtk", vtk_frame), ("ours", ours_frame))):
+            for name, frame in ((("ours", ours_frame), ("reference", vtk_frame)) if i % 2 == 0 else
+                                (("reference", vtk_frame), ("ours", ours_frame))):
                 t0 = time.perf_counter()
                 frame()
                 pair[name] = (time.perf_counter() - t0) * 1e3
             ours.append(pair["ours"])
-            vtk.append(pair["vtk"])
-            ratios.append(pair["ours"] / pair["vtk"])
+            vtk.append(pair["reference"])
+            ratios.append(pair["ours"] / pair["reference"])
     finally:
         pl.close()
-    return {"ours": _summary(ours), "vtk": _summary(vtk), "ratio": statistics.median(ratios)}
+    return {"ours": _summary(ours), "reference": _summary(vtk), "ratio": statistics.median(ratios)}
 
 
 def _status_kib(field: str) -> int:
@@ -113,7 +113,7 @@ def _measure_in_this_process(side: str, name: str, size) -> dict:
 
 def peak_memory(side: str, name: str, size) -> float:
     """MiB that drawing scene ``name`` at ``size`` took in a fresh process, ``side`` "ours"
-    or "vtk" (see the module docstring)."""
+    or "reference" (see the module docstring)."""
     done = subprocess.run([sys.executable, "-m", "compare.bench", "memory", side, name, f"{size[0]}x{size[1]}"],
                           capture_output=True, text=True, timeout=1800)
     if done.returncode != 0:
@@ -144,8 +144,8 @@ def markdown_table(rows: list[dict]) -> str:
         if "error" in r:
             lines.append(f"| {r['scene']} | {r['size']} | | {r['error']} | | | |")
             continue
-        o, v = r["ours"], r["vtk"]
-        mem = f"{r['memory']['ours']:.0f} / {r['memory']['vtk']:.0f}" if "memory" in r else ""
+        o, v = r["ours"], r["reference"]
+        mem = f"{r['memory']['ours']:.0f} / {r['memory']['reference']:.0f}" if "memory" in r else ""
         lines.append(f"| {r['scene']} | {r['size']} | {r['triangles']:,} | {o['median']:.1f} ({o['min']:.1f}–"
                      f"{o['max']:.1f}) | {v['median']:.1f} ({v['min']:.1f}–{v['max']:.1f}) | {r['ratio']:.2f} | {mem} |")
     return "\n".join(lines)
@@ -157,7 +157,7 @@ def main(argv: list[str]) -> int:
         w, h = (int(v) for v in argv[3].split("x"))
         print(json.dumps(_measure_in_this_process(argv[1], argv[2], (w, h))))
         return 0
-    print("usage: python -m compare.bench memory ours|vtk SCENE WxH (use `scanlab bench` instead)", file=sys.stderr)
+    print("usage: python -m compare.bench memory ours|reference SCENE WxH (use `scanlab bench` instead)", file=sys.stderr)
     return 2
 
 

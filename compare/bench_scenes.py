@@ -24,7 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
-from lab.loading import default_camera, scene_from_dict
+from lab.framing import default_camera
+from lab.loading import scene_from_dict
 from lab.mesh import Mesh
 from lab.normals import angle_weighted_normals
 from lab.scene import Image, Light, Material, Scene, SceneObject

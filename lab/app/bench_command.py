@@ -54,16 +54,16 @@ def measure(args, say=print) -> dict:
         row["triangles"] = int(sum(o.mesh.n_triangles for o in scene.objects))
         row.update(time_frames(scene, repeat=args.repeat))
         if args.memory == "all":
-            row["memory"] = {side: peak_memory(side, name, size) for side in ("ours", "vtk")}
+            row["memory"] = {side: peak_memory(side, name, size) for side in ("ours", "reference")}
         elif args.memory == "largest" and (largest is None or (row["triangles"], size) > largest[0]):
             largest = ((row["triangles"], size), row, name, size)
         run["rows"].append(row)
         say(f"[{i}/{len(cases)}] {name} {row['size']}: ours {row['ours']['median']:.1f} ms, "
-            f"VTK {row['vtk']['median']:.1f} ms, ours/VTK {row['ratio']:.2f}")
+            f"VTK {row['reference']['median']:.1f} ms, ours/VTK {row['ratio']:.2f}")
     if largest is not None:
         _, row, name, size = largest
         say(f"peak memory of {name} {row['size']} (two child processes) ...")
-        row["memory"] = {side: peak_memory(side, name, size) for side in ("ours", "vtk")}
+        row["memory"] = {side: peak_memory(side, name, size) for side in ("ours", "reference")}
     if not args.no_startup:
         say("start-up of a fresh `scanlab render icosphere:level=5`, kernel cache cold then warm ...")
         run["startup_s"] = startup_seconds()
@@ -86,7 +86,7 @@ def report(run: dict) -> str:
     for r in memory:
         m = r["memory"]
         lines.append(f"Peak memory of drawing {r['scene']} at {r['size']}: ours {m['ours']:.0f} MiB, "
-                     f"VTK {m['vtk']:.0f} MiB (ours/VTK {m['ours'] / m['vtk']:.2f}).")
+                     f"VTK {m['reference']:.0f} MiB (ours/VTK {m['ours'] / m['reference']:.2f}).")
     return "\n".join(lines)
 
 

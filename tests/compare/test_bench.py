@@ -7,7 +7,7 @@ from compare.bench_scenes import bench_scene
 
 def test_frames_of_both_renderers_are_timed_in_pairs():
     r = time_frames(bench_scene("icosphere:level=1", (64, 48)), repeat=3, warm_up=1)
-    for side in ("ours", "vtk"):
+    for side in ("ours", "reference"):
         assert 0 < r[side]["min"] <= r[side]["median"] <= r[side]["max"]
     assert r["ratio"] > 0
 
@@ -21,7 +21,7 @@ def test_peak_memory_grows_with_the_image():
 
 def test_the_table_has_a_row_per_measurement_and_names_errors():
     rows = [{"scene": "a", "size": "8x8", "triangles": 1200, "ours": {"median": 2.0, "min": 1.0, "max": 3.0},
-             "vtk": {"median": 4.0, "min": 3.5, "max": 5.0}, "ratio": 0.5, "memory": {"ours": 10.0, "vtk": 20.0}},
+             "reference": {"median": 4.0, "min": 3.5, "max": 5.0}, "ratio": 0.5, "memory": {"ours": 10.0, "reference": 20.0}},
             {"scene": "b", "size": "8x8", "error": "unavailable: no file"}]
     table = markdown_table(rows).splitlines()
     assert table[2] == "| a | 8x8 | 1,200 | 2.0 (1.0–3.0) | 4.0 (3.5–5.0) | 0.50 | 10 / 20 |"
