@@ -151,7 +151,7 @@ def normalise(x, y, z):
     return x, y, z
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit):
     """The linear colour ``(r, g, b)`` of one fragment of clipped triangle ``k`` with
     screen-space weights ``l1, l2`` (of its vertices 1 and 2), by its object's shading path
