@@ -33,7 +33,8 @@ from renderer.jit import njit, prange
 from renderer.bands import shading_bands
 from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
-from renderer.reflection.registry import reflect, reflect_span, span_applies, span_normal_only
+from renderer.reflection.registry import (reflect, reflect_span, span_applies, span_colours, span_normal_only,
+                                         store_span)
 from renderer.spans import face_toward_viewer, span_setup
 from renderer.texture_sampling import sample_texture
 
@@ -205,35 +206,61 @@ def store(rgb, row, col, r, g, b):
 
 
 @njit(cache=True, inline="always")
+def modulate_span(k, row, c0, count, frags, geo, textures, o, colour):
+    """The span's linear colours (``colour`` (3, ≥ count) float32) multiplied by object
+    ``o``'s texture (VTK, GL_MODULATE). Each pixel's texture coordinates are interpolated
+    as :func:`fragment_colour` interpolates them (float64, the same weights), so a texel
+    is chosen as on the pixel-by-pixel path; only the product is float32, as in VTK's shader."""
+    s = frags.clip_source[k]
+    i0, i1, i2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
+    tc = geo.tcoords
+    for i in range(count):
+        l1, l2 = screen_weights(k, row, c0 + i, frags.plane)
+        w0, w1, w2 = fragment_weights(frags, k, l1, l2)
+        ts = w0 * tc[i0, 0] + w1 * tc[i1, 0] + w2 * tc[i2, 0]
+        tt = w0 * tc[i0, 1] + w1 * tc[i1, 1] + w2 * tc[i2, 1]
+        tr, tg, tb = sample_texture(textures, o, ts, tt)
+        colour[0, i] *= np.float32(tr)
+        colour[1, i] *= np.float32(tg)
+        colour[2, i] *= np.float32(tb)
+
+
+@njit(cache=True, inline="always")
 def shade_span(k, row, c0, c1, frags, geo, materials, textures, lights, lit, colour, rgb):
     """Colour the pixels c0 … c1 − 1 of ``row``, all showing clipped triangle ``k``.
 
     Three ways, the first that applies: an untextured FACE_COLOUR triangle holds one colour,
-    stored along the span; an untextured object whose model has a span kernel
+    stored along the span; an object whose model has a span kernel
     (:func:`renderer.reflection.registry.span_applies`) is interpolated, lit and stored in
     one float32 loop over the span (:mod:`renderer.spans`) — or, when the colour cannot
-    change along it (a flat triangle whose model's colour depends on the normal alone),
-    worked out at its first pixel and stored along it; anything else goes pixel by pixel
-    through :func:`fragment_colour`.
+    change along it (a flat untextured triangle whose model's colour depends on the normal
+    alone), worked out at its first pixel and stored along it; a textured one is lit in
+    that loop, multiplied by its texels (:func:`modulate_span`), then stored; anything else
+    goes pixel by pixel through :func:`fragment_colour`.
     """
     s = frags.clip_source[k]
     o = geo.tri_object[s]
     path = materials.shading_path[o]
-    if not textures.textured[o]:
-        if path == FACE_COLOUR:
-            r, g, b = lit.face[s, 0] + lit.face[s, 3], lit.face[s, 1] + lit.face[s, 4], lit.face[s, 2] + lit.face[s, 5]
-            store(rgb, row, c0, r, g, b)
-            copy_along(rgb, row, c0, c1)
-            return
-        face = path == PIXEL_FACE_NORMAL
-        if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
-            consts = span_setup(k, row, c0, frags, geo, face)
+    textured = textures.textured[o]
+    if path == FACE_COLOUR and not textured:
+        r, g, b = lit.face[s, 0] + lit.face[s, 3], lit.face[s, 1] + lit.face[s, 4], lit.face[s, 2] + lit.face[s, 5]
+        store(rgb, row, c0, r, g, b)
+        copy_along(rgb, row, c0, c1)
+        return
+    face = path == PIXEL_FACE_NORMAL
+    if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
+        consts = span_setup(k, row, c0, frags, geo, face)
+        if textured:
+            span_colours(o, materials, lights, consts, face, c1 - c0, colour)
+            modulate_span(k, row, c0, c1 - c0, frags, geo, textures, o, colour)
+            store_span(colour, c1 - c0, rgb[row, c0:c1])
+        else:
             constant = face and span_normal_only(o, materials, lights)
             count = 1 if constant else c1 - c0
             reflect_span(o, materials, lights, consts, face, count, colour, rgb[row, c0:c0 + count])
             if constant:
                 copy_along(rgb, row, c0, c1)
-            return
+        return
     for col in range(c0, c1):
         l1, l2 = screen_weights(k, row, col, frags.plane)
         r, g, b = fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit)

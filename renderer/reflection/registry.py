@@ -23,7 +23,7 @@ from renderer.reflection.classic_model import classic_lighting
 from renderer.reflection.materials import Materials
 from renderer.reflection.opengl_model import opengl_lighting
 from renderer.reflection.vtk_model import vtk_lighting
-from renderer.reflection.vtk_spans import vtk_normal_only, vtk_span, vtk_span_applies
+from renderer.reflection.vtk_spans import store8, vtk_normal_only, vtk_span, vtk_span_applies, vtk_span_colours
 
 REFLECTION_MODELS = {m.name: m for m in (vtk_model.MODEL, opengl_model.MODEL, classic_model.MODEL)}
 """Model name (the scene's ``model``) → its :class:`~renderer.reflection.materials.ReflectionModel`."""
@@ -67,6 +67,20 @@ def reflect_span(o, materials, lights, consts, face, count, colour, out):
     span's ``count`` pixels lit and stored as 8 bits into ``out`` (count, 3); ``consts``
     and ``face`` from :func:`renderer.spans.span_setup`; ``colour`` (3, ≥ count) float32 scratch."""
     vtk_span(o, materials, lights, consts, face, count, colour, out)
+
+
+@njit(cache=True, inline="always")
+def span_colours(o, materials, lights, consts, face, count, colour):
+    """The span kernel without the store: the span's ``count`` linear colours into
+    ``colour`` (3, ≥ count) float32 (for a texture to modulate before
+    :func:`store_span` stores them)."""
+    vtk_span_colours(o, materials, lights, consts, face, count, colour)
+
+
+@njit(cache=True, inline="always")
+def store_span(colour, count, out):
+    """``colour`` (3, ≥ count) linear float32 → ``out`` (count, 3) as the framebuffer's 8 bits."""
+    store8(colour, count, out)
 
 
 def material_table(scene) -> Materials:

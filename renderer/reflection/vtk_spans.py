@@ -80,32 +80,38 @@ def _view_vector(px, py, pz):
 @njit(cache=True, inline="always")
 def vtk_span(o, materials, lights, consts, face, count, colour, out):
     """VTK's colour of object ``o`` at the span's ``count`` pixels, stored as 8 bits into
-    ``out`` (count, 3). ``consts`` and ``face``: the span's set-up
-    (:func:`renderer.spans.span_setup`); ``colour`` (3, ≥ count) float32 scratch for the
-    linear colours (written in one loop, stored as 8 bits in a second: an 8-bit store in
-    the lighting loop kept it from vectorising, 70 ns a pixel instead of 6). Complexities
-    0–2 only (:func:`vtk_span_applies`). The loops live in :func:`vtk_span_kernel`, compiled
-    once with plain arguments: inlined at its call site with the kernel inputs' named
-    tuples, numba took 16 s more to compile the shading kernel."""
+    ``out`` (count, 3): :func:`vtk_span_colours`, then :func:`store8` (an 8-bit store in
+    the lighting loop kept it from vectorising, 70 ns a pixel instead of 6)."""
+    vtk_span_colours(o, materials, lights, consts, face, count, colour)
+    store8(colour, count, out)
+
+
+@njit(cache=True, inline="always")
+def vtk_span_colours(o, materials, lights, consts, face, count, colour):
+    """VTK's linear colour of object ``o`` at the span's ``count`` pixels, into ``colour``
+    (3, ≥ count) float32. ``consts`` and ``face``: the span's set-up
+    (:func:`renderer.spans.span_setup`). Complexities 0–2 only (:func:`vtk_span_applies`).
+    The loops live in :func:`vtk_span_kernel`, compiled once with plain arguments: inlined
+    at its call site with the kernel inputs' named tuples, numba took 16 s more to compile
+    the shading kernel."""
     amb, dif, spe = materials.ambient[o], materials.diffuse[o], materials.specular[o]
     material = (np.float32(amb[0]), np.float32(amb[1]), np.float32(amb[2]), np.float32(dif[0]), np.float32(dif[1]),
                 np.float32(dif[2]), np.float32(spe[0]), np.float32(spe[1]), np.float32(spe[2]),
                 np.float32(materials.power[o]))
     shiny = spe[0] != 0.0 or spe[1] != 0.0 or spe[2] != 0.0  # else Ks·Cs·sf is 0 whatever sf
     vtk_span_kernel(vtk_complexity(o, materials, lights), shiny, material, (amb[0] + dif[0], amb[1] + dif[1],
-                    amb[2] + dif[2]), lights.direction, lights.intensity_rgb, consts, face, count, colour, out)
+                    amb[2] + dif[2]), lights.direction, lights.intensity_rgb, consts, face, count, colour)
 
 
 @njit(cache=True)
-def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts, face, count, colour, out):
-    """The loops of :func:`vtk_span`: ``material`` (Amb, Dif, Spe as float32 RGB, then the
+def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts, face, count, colour):
+    """The loops of :func:`vtk_span_colours`: ``material`` (Amb, Dif, Spe as float32 RGB, then the
     specular power), ``unlit`` Amb + Dif in float64, the lights' directions and colours."""
     a0, a1, a2, d0, d1, d2, s0, s1, s2, power = material
     if complexity == UNLIT:
         r, g, b = np.float32(unlit[0]), np.float32(unlit[1]), np.float32(unlit[2])
         for i in range(count):
             colour[0, i], colour[1, i], colour[2, i] = r, g, b
-        store8(colour, count, out)
         return
     if complexity == HEADLIGHT_ONLY:
         c0, c1, c2 = np.float32(l_col[0, 0]), np.float32(l_col[0, 1]), np.float32(l_col[0, 2])
@@ -116,7 +122,6 @@ def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts
             colour[0, i] = a0 + df * d0 * c0 + sf * s0 * c0
             colour[1, i] = a1 + df * d1 * c1 + sf * s1 * c1
             colour[2, i] = a2 + df * d2 * c2 + sf * s2 * c2
-        store8(colour, count, out)
         return
     if l_col.shape[0] == 1:  # one directional light: no loop over lights, so this loop vectorises
         lx, ly, lz = (np.float32(direction[0, 0]), np.float32(direction[0, 1]),
@@ -132,7 +137,6 @@ def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts
             colour[0, i] = a0 + d0 * (df * c0) + s0 * (sf * c0)
             colour[1, i] = a1 + d1 * (df * c1) + s1 * (sf * c1)
             colour[2, i] = a2 + d2 * (df * c2) + s2 * (sf * c2)
-        store8(colour, count, out)
         return
     for i in range(count):
         px, py, pz, nx, ny, nz = span_pixel(consts, i, face)
@@ -151,4 +155,3 @@ def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts
         colour[0, i] = a0 + d0 * sd0 + s0 * ss0
         colour[1, i] = a1 + d1 * sd1 + s1 * ss1
         colour[2, i] = a2 + d2 * sd2 + s2 * ss2
-    store8(colour, count, out)
