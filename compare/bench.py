@@ -20,6 +20,10 @@ Not a test: a command. What is measured, and how:
 - **Start-up** (:func:`startup_seconds`). The wall time of a fresh ``scanlab render
   icosphere:level=5`` process, to its PNG, with an empty kernel cache (cold: every kernel
   is compiled) and then again with the cache that run filled (warm).
+- **Contention** (:func:`thread_contention`). With another process spinning on one core
+  (:func:`busy_core`), our frames alternate between one numba thread and two, in one
+  process; reported: the median of the per-pair ratios 2 threads / 1 thread (> 1: the
+  second thread makes a frame slower when its core is taken).
 """
 from __future__ import annotations
 
@@ -76,6 +80,48 @@ def time_frames(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
     finally:
         pl.close()
     return {"ours": _summary(ours), "reference": _summary(vtk), "ratio": statistics.median(ratios)}
+
+
+def thread_contention(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
+    """Our frame time (ms) with one numba thread and with two, alternating in pairs (one
+    thread first in even pairs), and the median ratio two/one. Run it with
+    :func:`busy_core` holding a core to see contention."""
+    import numba
+
+    from renderer import render
+
+    saved = numba.get_num_threads()
+    one, two, ratios = [], [], []
+    try:
+        for threads in (1, 2) * warm_up:
+            numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+            render(scene)
+        for i in range(repeat):
+            pair = {}
+            for threads in ((1, 2) if i % 2 == 0 else (2, 1)):
+                numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+                t0 = time.perf_counter()
+                render(scene)
+                pair[threads] = (time.perf_counter() - t0) * 1e3
+            one.append(pair[1])
+            two.append(pair[2])
+            ratios.append(pair[2] / pair[1])
+    finally:
+        numba.set_num_threads(saved)
+    return {"one_thread": _summary(one), "two_threads": _summary(two), "ratio": statistics.median(ratios)}
+
+
+class busy_core:
+    """A child process spinning on one core for as long as the ``with`` block lasts."""
+
+    def __enter__(self):
+        self.child = subprocess.Popen([sys.executable, "-c", "while True: pass"])
+        time.sleep(0.5)
+        return self
+
+    def __exit__(self, *exc):
+        self.child.kill()
+        self.child.wait()
 
 
 def _status_kib(field: str) -> int:

@@ -64,6 +64,17 @@ def measure(args, say=print) -> dict:
         _, row, name, size = largest
         say(f"peak memory of {name} {row['size']} (two child processes) ...")
         row["memory"] = {side: peak_memory(side, name, size) for side in ("ours", "reference")}
+    if args.contention:
+        from compare.bench import busy_core, thread_contention
+
+        run["contention"] = []
+        with busy_core():
+            for name, size in cases:
+                r = thread_contention(bench_scene(name, size).with_overrides(shading=args.shading, model=args.model),
+                                      repeat=args.repeat)
+                run["contention"].append({"scene": name, "size": f"{size[0]}x{size[1]}", **r})
+                say(f"other core busy, {name} {size[0]}x{size[1]}: 1 thread {r['one_thread']['median']:.1f} ms, "
+                    f"2 threads {r['two_threads']['median']:.1f} ms, 2/1 {r['ratio']:.2f}")
     if not args.no_startup:
         say("start-up of a fresh `scanlab render icosphere:level=5`, kernel cache cold then warm ...")
         run["startup_s"] = startup_seconds()
@@ -82,6 +93,10 @@ def report(run: dict) -> str:
         s = run["startup_s"]
         lines.append(f"Start-up (`scanlab render icosphere:level=5`, fresh process): kernel cache cold "
                      f"{s['cold']:.1f} s, warm {s['warm']:.1f} s.")
+    if run.get("contention"):
+        lines.append("With another process spinning on one core, our frame time with 2 threads / 1 thread "
+                     "(median of alternating pairs): " + ", ".join(
+                         f"{c['scene']} {c['size']} {c['ratio']:.2f}" for c in run["contention"]) + ".")
     memory = [r for r in run["rows"] if "memory" in r]
     for r in memory:
         m = r["memory"]

@@ -424,6 +424,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--memory", choices=["largest", "all", "none"], default="largest",
                    help="peak memory in child processes: for the largest scene only (default), all, or none")
     p.add_argument("--no-startup", action="store_true", help="skip the cold/warm start-up measurement")
+    p.add_argument("--contention", action="store_true",
+                   help="also time our frames with 1 and 2 threads while another process keeps one core busy")
     p.add_argument("--list", action="store_true", help="list the benchmark set and exit")
     p.set_defaults(func=cmd_bench)
 

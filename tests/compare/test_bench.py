@@ -1,7 +1,9 @@
 """The benchmark's measurements (compare/bench.py), each on a tiny scene."""
 from __future__ import annotations
 
-from compare.bench import markdown_table, peak_memory, time_frames
+import os
+
+from compare.bench import busy_core, markdown_table, peak_memory, thread_contention, time_frames
 from compare.bench_scenes import bench_scene
 
 
@@ -26,3 +28,14 @@ def test_the_table_has_a_row_per_measurement_and_names_errors():
     table = markdown_table(rows).splitlines()
     assert table[2] == "| a | 8x8 | 1,200 | 2.0 (1.0–3.0) | 4.0 (3.5–5.0) | 0.50 | 10 / 20 |"
     assert "unavailable: no file" in table[3]
+
+
+def test_one_thread_and_two_are_timed_in_pairs_while_a_core_is_busy():
+    with busy_core() as busy:
+        child = busy.child.pid
+        assert os.path.exists(f"/proc/{child}")
+        r = thread_contention(bench_scene("icosphere:level=1", (64, 48)), repeat=3, warm_up=1)
+    assert busy.child.poll() is not None  # the spinning child is gone
+    for side in ("one_thread", "two_threads"):
+        assert 0 < r[side]["min"] <= r[side]["median"] <= r[side]["max"]
+    assert r["ratio"] > 0
