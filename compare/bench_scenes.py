@@ -24,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+import lab.atomic
 from lab.framing import default_camera
 from lab.loading import scene_from_dict
 from lab.mesh import Mesh
@@ -95,10 +96,12 @@ def public_mesh() -> Mesh:
         except OSError as exc:
             raise MeshUnavailable(f"cannot download the public mesh ({exc}); copy igea.ply into {cache}") from None
         cache.mkdir(parents=True, exist_ok=True)
-        source.write_bytes(data)
+        with lab.atomic.atomic_file(source) as f:
+            f.write(data)
     mesh = read_strip_ply(source.read_bytes())
     cache.mkdir(parents=True, exist_ok=True)
-    np.savez(converted, points=mesh.points, triangles=mesh.triangles)
+    with lab.atomic.atomic_file(converted) as f:
+        np.savez(f, points=mesh.points, triangles=mesh.triangles)
     return mesh
 
 

@@ -226,8 +226,9 @@ def modulate_span(k, row, c0, count, frags, geo, textures, o, colour):
 
 
 @njit(cache=True, inline="always")
-def shade_span(k, row, c0, c1, frags, geo, materials, textures, lights, lit, colour, rgb):
-    """Colour the pixels c0 … c1 − 1 of ``row``, all showing clipped triangle ``k``.
+def shade_span(k, row, c0, c1, frags, geo, inputs, colour, rgb):
+    """Colour the pixels c0 … c1 − 1 of ``row``, all showing clipped triangle ``k``;
+    ``inputs`` is ``(materials, textures, lights, lit)`` (as :class:`ShadingInputs`).
 
     Three ways, the first that applies: an untextured FACE_COLOUR triangle holds one colour,
     stored along the span; an object whose model has a span kernel
@@ -238,6 +239,7 @@ def shade_span(k, row, c0, c1, frags, geo, materials, textures, lights, lit, col
     that loop, multiplied by its texels (:func:`modulate_span`), then stored; anything else
     goes pixel by pixel through :func:`fragment_colour`.
     """
+    materials, textures, lights, lit = inputs
     s = frags.clip_source[k]
     o = geo.tri_object[s]
     path = materials.shading_path[o]
@@ -280,6 +282,7 @@ def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands
     """
     height, width = frags.tri_index.shape
     for band in prange(n_bands):
+        inputs = (materials, textures, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
         colour = np.empty((3, max(width, 1)), np.float32)  # a span's linear colours (:func:`shade_span`)
         for row in range(band, height, n_bands):
             col = 0
@@ -292,7 +295,7 @@ def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands
                     for c in range(col, end):
                         rgb[row, c, 0], rgb[row, c, 1], rgb[row, c, 2] = background[0], background[1], background[2]
                 else:
-                    shade_span(k, row, col, end, frags, geo, materials, textures, lights, lit, colour, rgb)
+                    shade_span(k, row, col, end, frags, geo, inputs, colour, rgb)
                 col = end
 
 

@@ -12,7 +12,7 @@ import platform
 import time
 from pathlib import Path
 
-from lab import atomic
+import lab.atomic
 
 START, END = "<!-- bench:start -->", "<!-- bench:end -->"
 
@@ -114,7 +114,7 @@ def write_between_markers(path: Path, text: str) -> None:
         tail = rest.split(END, 1)[1]
     else:
         head, tail = old + ("\n" if old and not old.endswith("\n") else ""), "\n"
-    atomic.write_text(path, f"{head}{START}\n{text}\n{END}{tail}")
+    lab.atomic.write_text(path, f"{head}{START}\n{text}\n{END}{tail}")
 
 
 def run_bench(args) -> int:
@@ -129,7 +129,7 @@ def run_bench(args) -> int:
     text = report(run)
     print(text)
     if args.json:
-        atomic.write_text(args.json, json.dumps(run, indent=1) + "\n")
+        lab.atomic.write_text(args.json, json.dumps(run, indent=1) + "\n")
         print(f"wrote {args.json}")
     if args.markdown:
         write_between_markers(Path(args.markdown), text)
