@@ -22,8 +22,9 @@ demo: $(STAMP)
 test: $(STAMP)
 	$(PY) -m pytest -q
 
+# issue 15's benchmark set against VTK; the table goes into README.md (section "Performance")
 bench: $(STAMP)
-	$(PY) -m lab bench icosphere:level=5 --size 512x512
+	$(PY) -m lab bench --json out/bench.json --markdown README.md
 
 # the scene loader against mutated presets; failing inputs go to out/fuzz/ (docs/bad-input.md)
 CASES ?= 100000

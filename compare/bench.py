@@ -1,51 +1,213 @@
-"""Frame time of scanlab's renderer and of VTK for the same scene, in one process.
+"""Frame time, peak memory and start-up of scanlab's renderer against VTK's (``scanlab bench``).
 
-Not a test: a command (``scanlab bench``). Each side is warmed up (numba kernels loaded,
-VTK's shaders compiled, buffers allocated) and then timed ``repeat`` frames in a block of
-its own; the medians are reported with the ratio VTK / scanlab (> 1 means scanlab is
-faster). Blocks, not alternation: numba's worker threads spin for a while after each
-parallel kernel and would steal llvmpipe's cores (VTK measured ~40 % slower when the
-frames alternate), so a pause separates the blocks. VTK's frame is one ``Render()`` plus the read-back of colour and depth (what a
-frame costs when its pixels are wanted in memory); scanlab's is one ``render(scene)``.
+Not a test: a command. What is measured, and how:
+
+- **Frame time.** Both renderers hold the same scene in one process. After a warm-up
+  (numba kernels loaded, VTK's shaders compiled, buffers allocated), frames alternate in
+  pairs, ours first in even pairs and VTK first in odd ones, so that a load change on the
+  machine hits both alike. A frame is scene-ready to uint8 image in memory: for VTK one
+  ``Render()`` and the read-back of colour and depth (:func:`compare.reference.read_frame`);
+  for ours everything :func:`renderer.render` does (nothing that depends on the camera is
+  kept from one frame to the next). Reported: median, min and max of each, and the median
+  of the per-pair ratios ours/VTK (< 1: ours is faster).
+- **Peak memory** (:func:`peak_memory`). Each renderer draws the scene in a child process
+  of its own: it first warms up on a tiny scene (kernels loaded; VTK's OpenGL context and
+  shaders made), then loads the scene, notes its resident set (the baseline: interpreter,
+  libraries and the scene's own arrays), resets the kernel's high-water mark
+  (``/proc/self/clear_refs``) and draws two frames — for VTK building the plotter (its
+  polydata and GPU buffers), rendering and reading back. Reported: the high-water mark
+  minus the baseline, the memory drawing the scene took, in MiB.
+- **Start-up** (:func:`startup_seconds`). The wall time of a fresh ``scanlab render
+  icosphere:level=5`` process, to its PNG, with an empty kernel cache (cold: every kernel
+  is compiled) and then again with the cache that run filled (warm).
+- **Contention** (:func:`thread_contention`). With another process spinning on one core
+  (:func:`busy_core`), our frames alternate between one numba thread and two, in one
+  process; reported: the median of the per-pair ratios 2 threads / 1 thread (> 1: the
+  second thread makes a frame slower when its core is taken).
 """
 from __future__ import annotations
 
+import json
+import os
 import statistics
+import subprocess
+import sys
+import tempfile
 import time
+from pathlib import Path
 
+from compare.bench_scenes import bench_scene
 from compare.reference import build_plotter, read_frame
 
-WARM_UP = 5
-PAUSE_S = 1.0  # lets numba's spinning worker threads go to sleep before VTK's block
+WARM_UP = 3
+TINY = "icosphere:level=1"
+STARTUP_SCENE = "icosphere:level=5"
 
 
-def bench(scene, repeat: int = 30) -> dict:
-    """Median frame times in ms, both renderers, and the ratio; see the module docstring."""
+def _summary(times: list[float]) -> dict:
+    return {"median": statistics.median(times), "min": min(times), "max": max(times)}
+
+
+def time_frames(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
+    """Frame times (ms) of both renderers on ``scene``, alternating in pairs; see the module
+    docstring. Returns ``{"ours": {median, min, max}, "reference": {...}, "ratio": median of ours/VTK}``."""
     from renderer import render
-
-    def ours():
-        render(scene)
 
     pl = build_plotter(scene)
 
-    def vtk():
+    def vtk_frame():
         pl.ren_win.Render()
         read_frame(pl)
 
-    times = {}
+    def ours_frame():
+        render(scene)
+
     try:
-        for frame in (ours, vtk):
-            for _ in range(WARM_UP):
-                frame()
-            times[frame] = []
-            for _ in range(repeat):
+        for _ in range(warm_up):
+            ours_frame()
+            vtk_frame()
+        ours, vtk, ratios = [], [], []
+        for i in range(repeat):
+            pair = {}
+            for name, frame in ((("ours", ours_frame), ("reference", vtk_frame)) if i % 2 == 0 else
+                                (("reference", vtk_frame), ("ours", ours_frame))):
                 t0 = time.perf_counter()
                 frame()
-                times[frame].append((time.perf_counter() - t0) * 1e3)
-            time.sleep(PAUSE_S)
+                pair[name] = (time.perf_counter() - t0) * 1e3
+            ours.append(pair["ours"])
+            vtk.append(pair["reference"])
+            ratios.append(pair["ours"] / pair["reference"])
     finally:
         pl.close()
-    o, v = statistics.median(times[ours]), statistics.median(times[vtk])
-    return {"scene": scene.source, "size": list(scene.image.size),
-            "triangles": int(sum(ob.mesh.n_triangles for ob in scene.objects)), "repeat": repeat,
-            "ours_ms": o, "vtk_ms": v, "vtk_over_ours": v / o}
+    return {"ours": _summary(ours), "reference": _summary(vtk), "ratio": statistics.median(ratios)}
+
+
+def thread_contention(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
+    """Our frame time (ms) with one numba thread and with two, alternating in pairs (one
+    thread first in even pairs), and the median ratio two/one. Run it with
+    :func:`busy_core` holding a core to see contention."""
+    import numba
+
+    from renderer import render
+
+    saved = numba.get_num_threads()
+    one, two, ratios = [], [], []
+    try:
+        for threads in (1, 2) * warm_up:
+            numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+            render(scene)
+        for i in range(repeat):
+            pair = {}
+            for threads in ((1, 2) if i % 2 == 0 else (2, 1)):
+                numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+                t0 = time.perf_counter()
+                render(scene)
+                pair[threads] = (time.perf_counter() - t0) * 1e3
+            one.append(pair[1])
+            two.append(pair[2])
+            ratios.append(pair[2] / pair[1])
+    finally:
+        numba.set_num_threads(saved)
+    return {"one_thread": _summary(one), "two_threads": _summary(two), "ratio": statistics.median(ratios)}
+
+
+class busy_core:
+    """A child process spinning on one core for as long as the ``with`` block lasts."""
+
+    def __enter__(self):
+        self.child = subprocess.Popen([sys.executable, "-c", "n = 0\nwhile 1: n += 1"])
+        time.sleep(0.5)
+        return self
+
+    def __exit__(self, *exc):
+        self.child.kill()
+        self.child.wait()
+
+
+def _status_kib(field: str) -> int:
+    for line in Path("/proc/self/status").read_text().splitlines():
+        if line.startswith(field + ":"):
+            return int(line.split()[1])
+    raise RuntimeError(f"no {field} in /proc/self/status")
+
+
+def _measure_in_this_process(side: str, name: str, size) -> dict:
+    """The child's side of :func:`peak_memory`: baseline and high-water mark, in KiB."""
+    import gc
+
+    if side == "ours":
+        from renderer import render
+
+        def draw(scene):
+            render(scene)
+            render(scene)
+    else:
+        def draw(scene):
+            pl = build_plotter(scene)
+            for _ in range(2):
+                pl.ren_win.Render()
+                read_frame(pl)
+            pl.close()
+    draw(bench_scene(TINY, (64, 64)))
+    scene = bench_scene(name, size)
+    gc.collect()
+    baseline = _status_kib("VmRSS")
+    refs = os.open("/proc/self/clear_refs", os.O_WRONLY)  # "5": the high-water mark starts again from here
+    os.write(refs, b"5")
+    os.close(refs)
+    draw(scene)
+    return {"baseline_kib": baseline, "peak_kib": _status_kib("VmHWM")}
+
+
+def peak_memory(side: str, name: str, size) -> float:
+    """MiB that drawing scene ``name`` at ``size`` took in a fresh process, ``side`` "ours"
+    or "reference" (see the module docstring)."""
+    done = subprocess.run([sys.executable, "-m", "compare.bench", "memory", side, name, f"{size[0]}x{size[1]}"],
+                          capture_output=True, text=True, timeout=1800)
+    if done.returncode != 0:
+        raise RuntimeError(f"memory child failed: {done.stderr.strip().splitlines()[-1:]}")
+    m = json.loads(done.stdout.strip().splitlines()[-1])
+    return (m["peak_kib"] - m["baseline_kib"]) / 1024.0
+
+
+def startup_seconds() -> dict:
+    """Seconds from a fresh ``scanlab render icosphere:level=5`` process to its PNG, with the
+    kernel cache cold and then warm (``SCANLAB_KERNEL_CACHE`` set to an empty folder)."""
+    result = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        env = {**os.environ, "SCANLAB_KERNEL_CACHE": str(Path(tmp) / "kernels")}
+        for state in ("cold", "warm"):
+            t0 = time.perf_counter()
+            subprocess.run([sys.executable, "-m", "lab", "render", STARTUP_SCENE, "-o", str(Path(tmp) / "out.png")],
+                           env=env, check=True, capture_output=True, timeout=1800)
+            result[state] = time.perf_counter() - t0
+    return result
+
+
+def markdown_table(rows: list[dict]) -> str:
+    """The frame-time rows (and memory where measured) as a Markdown table."""
+    lines = ["| scene | size | triangles | ours ms (min–max) | VTK ms (min–max) | ours/VTK | memory ours / VTK MiB |",
+             "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        if "error" in r:
+            lines.append(f"| {r['scene']} | {r['size']} | | {r['error']} | | | |")
+            continue
+        o, v = r["ours"], r["reference"]
+        mem = f"{r['memory']['ours']:.0f} / {r['memory']['reference']:.0f}" if "memory" in r else ""
+        lines.append(f"| {r['scene']} | {r['size']} | {r['triangles']:,} | {o['median']:.1f} ({o['min']:.1f}–"
+                     f"{o['max']:.1f}) | {v['median']:.1f} ({v['min']:.1f}–{v['max']:.1f}) | {r['ratio']:.2f} | {mem} |")
+    return "\n".join(lines)
+
+
+def main(argv: list[str]) -> int:
+    """``python -m compare.bench memory SIDE NAME WxH``: the child of :func:`peak_memory`."""
+    if len(argv) == 4 and argv[0] == "memory":
+        w, h = (int(v) for v in argv[3].split("x"))
+        print(json.dumps(_measure_in_this_process(argv[1], argv[2], (w, h))))
+        return 0
+    print("usage: python -m compare.bench memory ours|reference SCENE WxH (use `scanlab bench` instead)", file=sys.stderr)
+    return 2
+
+
+if __name__ == "__main__":
+    raise SystemExit(main(sys.argv[1:]))

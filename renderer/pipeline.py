@@ -21,12 +21,12 @@ from renderer.clip import clip_triangles
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
-from renderer.raster import rasterize_triangles
+from renderer.raster import depth_to_window, rasterize_visibility
 from renderer.reflection.registry import material_table
 from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
 from renderer.texture_sampling import texture_table
 from renderer.translucency import draw_translucent
-from renderer.transform import normal_matrix, transform_points
+from renderer.transform import normal_matrix, transform_vertices
 from renderer.window import clip_to_window, window_rows_to_image_rows
 from renderer.workspace import thread_workspace
 
@@ -39,10 +39,13 @@ class RenderOptions:
     interpolation : None (the scene's ``[render] interpolation``), "perspective"
         (correct, GPUs) or "screen" (linear in screen space, as the course's scanline
         slides do), for colours, positions and normals.
+    spans : shade each row in spans of one triangle (the fast path, :mod:`renderer.spans`)
+        or, False, pixel by pixel (the plain path; the same bytes, tests compare them).
     """
 
     fill_rule: str = "top-left"
     interpolation: str | None = None
+    spans: bool = True
 
 
 class SceneGeometry(NamedTuple):
@@ -99,29 +102,35 @@ class RasterRules(NamedTuple):
 
 
 def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray) -> SceneGeometry:
-    """Stages 1–3 for every object: model → world → view → clip, vertex by vertex."""
-    views, clips, normals, tris, owners, vert_owners, tcoords = [], [], [], [], [], [], []
-    offset = 0
-    for i, obj in enumerate(scene.objects):
+    """Stages 1–3 for every object: model → world → view → clip, vertex by vertex
+    (:func:`renderer.transform.transform_vertices`, each object into its rows)."""
+    objects = scene.objects
+    n_points = [obj.mesh.n_points for obj in objects]
+    starts = np.concatenate([[0], np.cumsum(n_points)]).astype(np.int64)
+    n = int(starts[-1])
+    verts_view, verts_clip, normals = np.empty((n, 3)), np.empty((n, 4)), np.empty((n, 3))
+    tcoords = np.zeros((n, 2))
+    no_normals = np.empty((0, 3))
+    for obj, a, b in zip(objects, starts[:-1], starts[1:]):
         model_to_view = obj.model_to_world @ world_to_view_m
-        verts_view = transform_points(obj.mesh.points, model_to_view)
-        views.append(verts_view[:, :3])
-        clips.append(verts_view @ view_to_clip_m)
-        if obj.mesh.point_normals is not None:
-            normals.append(obj.mesh.point_normals @ normal_matrix(model_to_view))
-        else:
-            normals.append(np.zeros((obj.mesh.n_points, 3)))
-        tris.append(obj.mesh.triangles + offset)
-        owners.append(np.full(obj.mesh.n_triangles, i, np.int64))
-        vert_owners.append(np.full(obj.mesh.n_points, i, np.int64))
-        tcoords.append(obj.mesh.tcoords if obj.mesh.tcoords is not None else np.zeros((obj.mesh.n_points, 2)))
-        offset += obj.mesh.n_points
-    verts_view, triangles = np.ascontiguousarray(np.concatenate(views)), np.concatenate(tris)
+        mesh = obj.mesh
+        has_normals = mesh.point_normals is not None
+        transform_vertices(np.ascontiguousarray(mesh.points, dtype=np.float64), model_to_view, view_to_clip_m,
+                           np.ascontiguousarray(mesh.point_normals, dtype=np.float64) if has_normals else no_normals,
+                           normal_matrix(model_to_view) if has_normals else np.eye(3),
+                           verts_view[a:b], verts_clip[a:b], normals[a:b])
+        if mesh.tcoords is not None:
+            tcoords[a:b] = mesh.tcoords
+    if len(objects) == 1:
+        triangles = np.ascontiguousarray(objects[0].mesh.triangles, dtype=np.int64)
+    else:
+        triangles = np.concatenate([obj.mesh.triangles + a for obj, a in zip(objects, starts[:-1])])
+    n_triangles = [obj.mesh.n_triangles for obj in objects]
+    owners = np.arange(len(objects), dtype=np.int64)
     normals_face = np.empty((len(triangles), 3))
     face_normals(verts_view, triangles, normals_face)
-    return SceneGeometry(verts_view, np.concatenate(clips), np.concatenate(normals), triangles,
-                         np.concatenate(owners), np.concatenate(vert_owners), np.concatenate(tcoords), normals_face,
-                         bool(scene.camera.parallel))
+    return SceneGeometry(verts_view, verts_clip, normals, triangles, np.repeat(owners, n_triangles),
+                         np.repeat(owners, n_points), tcoords, normals_face, bool(scene.camera.parallel))
 
 
 class Stages(NamedTuple):
@@ -185,7 +194,8 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     width, height = scene.image.size
     cam = scene.camera
     w2v = world_to_view(cam)
-    v2c = view_to_clip(cam, width / height, clipping_range(cam, scene.world_bounds()))
+    near_far = cam.clipping_range if cam.clipping_range is not None else clipping_range(cam, scene.world_bounds())
+    v2c = view_to_clip(cam, width / height, near_far)
     geo = transform_scene(scene, w2v, v2c)
 
     ws = thread_workspace()
@@ -199,25 +209,26 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     materials = material_table(scene)
     translucent = materials.opacity[geo.tri_object[clipped.clip_source]] < 1.0
     opaque = clipped.take(~translucent) if translucent.any() else clipped
-    depth, tri_index, bary, front = rasterize_triangles(opaque.tri_fixed, opaque.tri_window, width, height,
-                                                        rules.fill_rule, ws=ws, depth_test=rules.depth_test,
-                                                        cull_back=rules.cull_back)
+    vis = rasterize_visibility(opaque.tri_fixed, opaque.tri_window, width, height, rules.fill_rule, ws=ws,
+                               depth_test=rules.depth_test, cull_back=rules.cull_back)
 
     lights = view_lights(scene.lights, cam, w2v, scene.render)
     inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
     perspective = (options.interpolation or scene.render.interpolation) == "perspective"
     rgb = np.empty((height, width, 3), np.uint8)
-    shade(Fragments(tri_index, bary, front, opaque.tri_clip, opaque.clip_bary, opaque.clip_source, perspective), geo,
-          inputs, to_8bit(np.asarray(scene.image.background)), rgb)
-    coverage = tri_index >= 0
+    shade(Fragments(vis.tri_index, vis.setup.plane, vis.setup.front, opaque.tri_clip, opaque.clip_bary,
+                    opaque.clip_source, perspective), geo, inputs, to_8bit(np.asarray(scene.image.background)), rgb,
+          spans=options.spans)
+    coverage = vis.tri_index >= 0
     if translucent.any():
-        coverage = coverage | draw_translucent(clipped.take(translucent), depth, rgb, geo, inputs,
+        coverage = coverage | draw_translucent(clipped.take(translucent), vis.depth, rgb, geo, inputs,
                                                scene.render.transparency, perspective, rules, ws)
-    frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth.copy()),
+    frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth_to_window(vis.depth)),
                   coverage=window_rows_to_image_rows(coverage))
     if not keep_stages:
         return frame, None
     source = opaque.clip_source
+    tri_index = vis.tri_index
     triangle = np.where(tri_index >= 0, source[np.maximum(tri_index, 0)] if len(source) else -1, -1)
     fixed = clipped.tri_fixed
     area = ((fixed[:, 1, 0] - fixed[:, 0, 0]) * (fixed[:, 2, 1] - fixed[:, 0, 1])

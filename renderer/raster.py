@@ -43,6 +43,8 @@ FILL_RULES = {"top-left": TOP_LEFT, "bottom-right": BOTTOM_RIGHT}
 
 DEPTH_BITS = 24
 DEPTH_MAX = float((1 << DEPTH_BITS) - 1)
+DEPTH_CLEAR = np.int32((1 << DEPTH_BITS) - 1)
+"""The integer depth buffer's clear value: window depth 1.0."""
 
 EMPTY = -1
 """``tri_index`` of a pixel no triangle covers."""
@@ -167,35 +169,55 @@ def row_span(k, row, ccw, width, rule):
 
 
 @njit(cache=True, inline="always")
-def pixel_fragment(k, row, col, plane):
-    """Triangle ``k`` at the centre of pixel (row, col): screen-space weights l1, l2 of its
-    vertices 1 and 2, and the window depth rounded to the 24-bit depth buffer."""
+def screen_weights(k, row, col, plane):
+    """Triangle ``k``'s screen-space weights ``l1, l2`` of its vertices 1 and 2 at the centre
+    of pixel (row, col), from its set-up ``plane`` (:class:`TriangleSetup`)."""
     x0, y0, e1x, e1y, e2x, e2y = plane[k, 0], plane[k, 1], plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5]
     a2 = e1x * e2y - e2x * e1y
     py = row + 0.5 - y0
     px = col + 0.5 - x0
-    l1 = (px * e2y - e2x * py) / a2
-    l2 = (e1x * py - px * e1y) / a2
-    z = plane[k, 8] + plane[k, 9] * (col + 0.5 - plane[k, 6]) + plane[k, 10] * (row + 0.5 - plane[k, 7])
-    z = np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5) / DEPTH_MAX
-    return l1, l2, z
+    return (px * e2y - e2x * py) / a2, (e1x * py - px * e1y) / a2
 
 
 @njit(cache=True, inline="always")
-def fill_row(k, row, setup, rule, depth_test, depth, tri_index, bary):
+def row_depth(k, row, plane):
+    """The part of triangle ``k``'s depth plane that is constant along pixel row ``row``:
+    ``az + zy·(row + 0.5 − ay)`` (see :func:`pixel_depth`)."""
+    return plane[k, 8] + plane[k, 10] * (row + 0.5 - plane[k, 7])
+
+
+@njit(cache=True, inline="always")
+def pixel_depth(k, z_row, col, plane):
+    """Triangle ``k``'s window depth at the centre of pixel column ``col`` of a row whose
+    constant part is ``z_row`` (:func:`row_depth`), clamped to 0..1 and rounded to the
+    24-bit depth buffer: an integer 0 … 2²⁴ − 1 (the window depth times :data:`DEPTH_MAX`)."""
+    z = z_row + plane[k, 9] * (col + 0.5 - plane[k, 6])
+    return np.int32(np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5))
+
+
+@njit(cache=True, inline="always")
+def pixel_fragment(k, row, col, plane):
+    """Triangle ``k`` at the centre of pixel (row, col): screen-space weights l1, l2 of its
+    vertices 1 and 2, and the 24-bit integer depth (:func:`pixel_depth`)."""
+    l1, l2 = screen_weights(k, row, col, plane)
+    return l1, l2, pixel_depth(k, row_depth(k, row, plane), col, plane)
+
+
+@njit(cache=True, inline="always")
+def fill_row(k, row, setup, rule, depth_test, depth, tri_index):
     """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes."""
     first, last = row_span(k, row, setup.ccw, depth.shape[1], rule)
+    z_row = row_depth(k, row, setup.plane)
+    kk = np.int32(k)
     for col in range(first, last + 1):
-        l1, l2, z = pixel_fragment(k, row, col, setup.plane)
+        z = pixel_depth(k, z_row, col, setup.plane)
         if z <= depth[row, col] or not depth_test:
             depth[row, col] = z
-            tri_index[row, col] = k
-            bary[row, col, 0] = l1
-            bary[row, col, 1] = l2
+            tri_index[row, col] = kk
 
 
 @njit(cache=True, parallel=True)
-def rasterize(setup, n_bands, rule, depth_test, depth, tri_index, bary):
+def rasterize(setup, n_bands, rule, depth_test, depth, tri_index):
     """Scan-convert every triangle of ``setup`` into the visibility buffer (the loop kernel).
 
     The image's rows are dealt out to ``n_bands`` bands (:mod:`renderer.bands`), filled in
@@ -204,20 +226,31 @@ def rasterize(setup, n_bands, rule, depth_test, depth, tri_index, bary):
     result is the same, bit for bit, as a serial loop (z-buffer ties included).
     ``depth_test`` False draws every fragment over what is there (the painter's algorithm,
     or no hidden-surface removal at all): then the last triangle drawn wins.
-    depth (H, W) float, tri_index (H, W) int64 (:data:`EMPTY` where none), bary (H, W, 2):
-    outputs, in window rows (y up); bary holds the screen-space weights of vertices 1 and 2.
-    The outputs are plain arrays: numba loses writes made through a NamedTuple's fields
-    inside ``prange`` (numba issues #5872, #7135); ``setup`` is only read.
+    depth (H, W) int32, the 24-bit depth (:data:`DEPTH_CLEAR` where empty), tri_index (H, W)
+    int32 (:data:`EMPTY` where none): outputs, in window rows (y up). The weights are not
+    stored: shading works them out (:func:`screen_weights`) for the one visible fragment
+    of each pixel. The outputs are plain arrays: numba loses writes made through a
+    NamedTuple's fields inside ``prange`` (numba issues #5872, #7135); ``setup`` is only read.
     """
     height, width = depth.shape
     for b in prange(n_bands):
         for row in range(b, height, n_bands):
             for col in range(width):
-                depth[row, col] = 1.0
+                depth[row, col] = DEPTH_CLEAR
                 tri_index[row, col] = EMPTY
         for k in range(setup.ccw.shape[0]):
             for row in range(first_row_of_band(setup.rows[k, 0], b, n_bands), setup.rows[k, 1] + 1, n_bands):
-                fill_row(k, row, setup, rule, depth_test, depth, tri_index, bary)
+                fill_row(k, row, setup, rule, depth_test, depth, tri_index)
+
+
+@njit(cache=True, parallel=True)
+def weights_of_visible(plane, tri_index, bary):
+    """:func:`screen_weights` of every covered pixel's triangle into ``bary`` (H, W, 2)."""
+    for row in prange(tri_index.shape[0]):
+        for col in range(tri_index.shape[1]):
+            k = tri_index[row, col]
+            if k != EMPTY:
+                bary[row, col, 0], bary[row, col, 1] = screen_weights(k, row, col, plane)
 
 
 def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back: bool, ws=None,
@@ -232,24 +265,50 @@ def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back
     return setup
 
 
-def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
-                        fill_rule: str = "top-left", n_bands: int | None = None, ws=None,
-                        depth_test: bool = True, cull_back: bool = False):
-    """Allocate the visibility buffer and fill it (the Python wrapper).
+class Visibility(NamedTuple):
+    """The opaque pass's visibility buffer (window rows, y up): ``depth`` (H, W) int32, the
+    24-bit integer depth (:data:`DEPTH_CLEAR` where empty); ``tri_index`` (H, W) int32, the
+    triangle that won each pixel (:data:`EMPTY` where none); ``setup`` the triangles'
+    :class:`TriangleSetup` (its ``plane`` gives the weights, :func:`screen_weights`)."""
 
-    Returns ``depth`` (H, W), ``tri_index`` (H, W), ``bary`` (H, W, 2) in window rows
-    (y up; see :func:`rasterize`) and ``front`` (K,) per triangle. ``n_bands``
-    defaults to two per thread (:func:`renderer.bands.raster_bands`). With a workspace
-    ``ws`` every array lives in it. ``depth_test=False`` turns the z-buffer test off;
-    ``cull_back=True`` drops back-facing triangles.
-    """
+    depth: np.ndarray
+    tri_index: np.ndarray
+    setup: TriangleSetup
+
+
+def depth_to_window(depth: np.ndarray) -> np.ndarray:
+    """24-bit integer depths → window depth 0..1 as float64 (``q / (2²⁴ − 1)``, 1.0 where empty)."""
+    return depth / DEPTH_MAX
+
+
+def rasterize_visibility(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
+                         fill_rule: str = "top-left", n_bands: int | None = None, ws=None,
+                         depth_test: bool = True, cull_back: bool = False) -> Visibility:
+    """Set up the triangles and fill the visibility buffer (the Python wrapper the pipeline
+    calls); with a workspace ``ws`` every array lives in it. ``n_bands`` defaults to two per
+    thread (:func:`renderer.bands.raster_bands`); ``depth_test=False`` turns the z-buffer
+    test off; ``cull_back=True`` drops back-facing triangles."""
     tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
     if len(tri_fixed) != len(tri_window):
         raise ValueError("tri_fixed and tri_window must hold the same triangles")
     setup = set_up(tri_fixed, tri_window, height, cull_back, ws, "raster")
-    depth = empty(ws, "raster.depth", (height, width))
-    tri_index = empty(ws, "raster.tri_index", (height, width), np.int64)
-    bary = empty(ws, "raster.bary", (height, width, 2))  # read only where tri_index is not EMPTY
-    rasterize(setup, raster_bands(height, n_bands), FILL_RULES[fill_rule], bool(depth_test), depth, tri_index, bary)
-    return depth, tri_index, bary, setup.front
+    depth = empty(ws, "raster.depth", (height, width), np.int32)
+    tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)
+    rasterize(setup, raster_bands(height, n_bands), FILL_RULES[fill_rule], bool(depth_test), depth, tri_index)
+    return Visibility(depth, tri_index, setup)
+
+
+def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
+                        fill_rule: str = "top-left", n_bands: int | None = None, ws=None,
+                        depth_test: bool = True, cull_back: bool = False):
+    """:func:`rasterize_visibility` in the textbook's terms (for lessons and tests).
+
+    Returns ``depth`` (H, W) window depth 0..1 on the 24-bit grid, ``tri_index`` (H, W),
+    ``bary`` (H, W, 2) the screen-space weights of each visible triangle's vertices 1 and 2
+    (undefined where empty), all in window rows (y up), and ``front`` (K,) per triangle.
+    """
+    vis = rasterize_visibility(tri_fixed, tri_window, width, height, fill_rule, n_bands, ws, depth_test, cull_back)
+    bary = np.zeros((height, width, 2))
+    weights_of_visible(vis.setup.plane, vis.tri_index, bary)
+    return depth_to_window(vis.depth), vis.tri_index, bary, vis.setup.front

@@ -7,15 +7,19 @@ source triangle, and used to interpolate what the object's **shading path**
 vectors in view space. By path:
 
 - ``PIXEL_FACE_NORMAL``: the triangle's plane normal (v1 − v0) × (v2 − v0), turned toward
-  the viewer (perspective: so that n·P ≤ 0; parallel: n.z ≥ 0), lit per pixel;
+  the viewer (perspective: so that n·P ≤ 0 at its first vertex; parallel: n.z ≥ 0;
+  :func:`renderer.spans.face_toward_viewer`), lit per pixel;
 - ``PIXEL_TWO_SIDED``: the perspective-correct interpolation of the (unnormalised)
   view-space vertex normals, normalised, negated on back faces, lit per pixel;
 - ``PIXEL_AS_GIVEN``: the same interpolated normal, never flipped, lit per pixel;
 - ``FACE_COLOUR``: the triangle's lit colour (:mod:`renderer.lit_colours`);
 - ``VERTEX_COLOUR``: its vertices' lit colours, interpolated.
 
-Per-pixel lighting goes through :func:`renderer.reflection.registry.reflect`, which picks
-the object's reflection model. A texture multiplies the lit colour (VTK, GL_MODULATE); the
+Rows are shaded in **spans**, runs of pixels showing one triangle (:func:`shade_span`): a
+colour that cannot change along the span is worked out once; a model with a span kernel
+(the vtk model, :mod:`renderer.reflection.vtk_spans`) lights the whole span in float32,
+vectorised (:mod:`renderer.spans`); anything else is lit pixel by pixel through
+:func:`renderer.reflection.registry.reflect`, which picks the object's reflection model. A texture multiplies the lit colour (VTK, GL_MODULATE); the
 secondary colour (separate specular, zero unless asked for) is added after it.
 """
 from __future__ import annotations
@@ -27,9 +31,11 @@ import numpy as np
 from renderer.jit import njit, prange
 
 from renderer.bands import shading_bands
-from renderer.raster import EMPTY
+from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
-from renderer.reflection.registry import reflect
+from renderer.reflection.registry import (reflect, reflect_span, span_applies, span_colours, span_normal_only,
+                                         store_span)
+from renderer.spans import face_toward_viewer, span_setup
 from renderer.texture_sampling import sample_texture
 
 
@@ -89,11 +95,11 @@ def plane_normal(a, b, c, n):
         n[0], n[1], n[2] = n[0] / length, n[1] / length, n[2] / length
 
 
-@njit(cache=True)
+@njit(cache=True, parallel=True)
 def face_normals(verts, triangles, out):
     """:func:`plane_normal` of every triangle (T, 3) of ``verts`` into ``out`` (T, 3), once
     per frame: flat shading reads its triangle's, instead of working it out at every pixel."""
-    for t in range(triangles.shape[0]):
+    for t in prange(triangles.shape[0]):
         plane_normal(verts[triangles[t, 0]], verts[triangles[t, 1]], verts[triangles[t, 2]], out[t])
 
 
@@ -101,14 +107,15 @@ class Fragments(NamedTuple):
     """The visibility buffer and the clipped triangles it points into (window rows, y up).
 
     tri_index (H, W) clipped triangle per pixel (:data:`renderer.raster.EMPTY` = none);
-    bary (H, W, 2) its screen-space weights of vertices 1 and 2; front (K,); tri_clip
-    (K, 3, 4); clip_bary (K, 3, 3) weights in the source triangle; clip_source (K,) source
-    triangle; perspective: weights made perspective-correct (else screen-linear, see
-    :func:`fragment_weights`).
+    plane (K, 11) the triangles' set-up (:class:`renderer.raster.TriangleSetup`), from which
+    the screen-space weights of a pixel are worked out (:func:`renderer.raster.screen_weights`);
+    front (K,); tri_clip (K, 3, 4); clip_bary (K, 3, 3) weights in the source triangle;
+    clip_source (K,) source triangle; perspective: weights made perspective-correct (else
+    screen-linear, see :func:`fragment_weights`).
     """
 
     tri_index: np.ndarray
-    bary: np.ndarray
+    plane: np.ndarray
     front: np.ndarray
     tri_clip: np.ndarray
     clip_bary: np.ndarray
@@ -169,9 +176,7 @@ def fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit):
     else:
         p = interpolate(w, geo.verts_view, i0, i1, i2)
         if path == PIXEL_FACE_NORMAL:
-            nx, ny, nz = geo.face_normals[s, 0], geo.face_normals[s, 1], geo.face_normals[s, 2]
-            if (nz < 0.0) if geo.parallel else (nx * p[0] + ny * p[1] + nz * p[2] > 0.0):
-                nx, ny, nz = -nx, -ny, -nz
+            nx, ny, nz = face_toward_viewer(geo, s)
         else:
             nx, ny, nz = interpolate(w, geo.normals_view, i0, i1, i2)
             nx, ny, nz = normalise(nx, ny, nz)
@@ -186,36 +191,120 @@ def fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit):
     return r + sr, g + sg, b + sb  # ... and the separate specular colour (zero unless asked for) comes after it
 
 
+@njit(cache=True, inline="always")
+def copy_along(rgb, row, c0, c1):
+    """Pixel c0's colour copied to c0 + 1 … c1 − 1 of ``row``."""
+    for col in range(c0 + 1, c1):
+        rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = rgb[row, c0, 0], rgb[row, c0, 1], rgb[row, c0, 2]
+
+
+@njit(cache=True, inline="always")
+def store(rgb, row, col, r, g, b):
+    rgb[row, col, 0] = unorm8(r)
+    rgb[row, col, 1] = unorm8(g)
+    rgb[row, col, 2] = unorm8(b)
+
+
+@njit(cache=True, inline="always")
+def modulate_span(k, row, c0, count, frags, geo, textures, o, colour):
+    """The span's linear colours (``colour`` (3, ≥ count) float32) multiplied by object
+    ``o``'s texture (VTK, GL_MODULATE). Each pixel's texture coordinates are interpolated
+    as :func:`fragment_colour` interpolates them (float64, the same weights), so a texel
+    is chosen as on the pixel-by-pixel path; only the product is float32, as in VTK's shader."""
+    s = frags.clip_source[k]
+    i0, i1, i2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
+    tc = geo.tcoords
+    for i in range(count):
+        l1, l2 = screen_weights(k, row, c0 + i, frags.plane)
+        w0, w1, w2 = fragment_weights(frags, k, l1, l2)
+        ts = w0 * tc[i0, 0] + w1 * tc[i1, 0] + w2 * tc[i2, 0]
+        tt = w0 * tc[i0, 1] + w1 * tc[i1, 1] + w2 * tc[i2, 1]
+        tr, tg, tb = sample_texture(textures, o, ts, tt)
+        colour[0, i] *= np.float32(tr)
+        colour[1, i] *= np.float32(tg)
+        colour[2, i] *= np.float32(tb)
+
+
+@njit(cache=True, inline="always")
+def shade_span(k, row, c0, c1, frags, geo, inputs, colour, rgb):
+    """Colour the pixels c0 … c1 − 1 of ``row``, all showing clipped triangle ``k``;
+    ``inputs`` is ``(materials, textures, lights, lit)`` (as :class:`ShadingInputs`).
+
+    Three ways, the first that applies: an untextured FACE_COLOUR triangle holds one colour,
+    stored along the span; an object whose model has a span kernel
+    (:func:`renderer.reflection.registry.span_applies`) is interpolated, lit and stored in
+    one float32 loop over the span (:mod:`renderer.spans`) — or, when the colour cannot
+    change along it (a flat untextured triangle whose model's colour depends on the normal
+    alone), worked out at its first pixel and stored along it; a textured one is lit in
+    that loop, multiplied by its texels (:func:`modulate_span`), then stored; anything else
+    goes pixel by pixel through :func:`fragment_colour`.
+    """
+    materials, textures, lights, lit = inputs
+    s = frags.clip_source[k]
+    o = geo.tri_object[s]
+    path = materials.shading_path[o]
+    textured = textures.textured[o]
+    if path == FACE_COLOUR and not textured:
+        r, g, b = lit.face[s, 0] + lit.face[s, 3], lit.face[s, 1] + lit.face[s, 4], lit.face[s, 2] + lit.face[s, 5]
+        store(rgb, row, c0, r, g, b)
+        copy_along(rgb, row, c0, c1)
+        return
+    face = path == PIXEL_FACE_NORMAL
+    if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
+        consts = span_setup(k, row, c0, frags, geo, face)
+        if textured:
+            span_colours(o, materials, lights, consts, face, c1 - c0, colour)
+            modulate_span(k, row, c0, c1 - c0, frags, geo, textures, o, colour)
+            store_span(colour, c1 - c0, rgb[row, c0:c1])
+        else:
+            constant = face and span_normal_only(o, materials, lights)
+            count = 1 if constant else c1 - c0
+            reflect_span(o, materials, lights, consts, face, count, colour, rgb[row, c0:c0 + count])
+            if constant:
+                copy_along(rgb, row, c0, c1)
+        return
+    for col in range(c0, c1):
+        l1, l2 = screen_weights(k, row, col, frags.plane)
+        r, g, b = fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit)
+        store(rgb, row, col, r, g, b)
+
+
 @njit(cache=True, parallel=True)
-def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands, rgb):
+def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands, spans, rgb):
     """Colour every covered pixel and store 8-bit RGB (the loop kernel).
 
-    Each covered pixel gets :func:`fragment_colour` of its visible fragment; an empty one
-    the 8-bit ``background``. Rows are independent and each pixel is written once, so a
-    parallel loop gives the same bytes as a serial one, whatever the number of bands
-    ``n_bands`` the rows are dealt to (:mod:`renderer.bands`).
+    Each row is walked in spans of pixels that show the same triangle (:func:`shade_span`);
+    an empty pixel gets the 8-bit ``background``. ``spans`` False cuts every span to one
+    pixel (the plain path the tests compare the spans with: the same bytes). Rows are
+    independent and each pixel is written once, so a parallel loop gives the same bytes as
+    a serial one, whatever the number of bands ``n_bands`` the rows are dealt to
+    (:mod:`renderer.bands`).
     """
     height, width = frags.tri_index.shape
     for band in prange(n_bands):
+        inputs = (materials, textures, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
+        colour = np.empty((3, max(width, 1)), np.float32)  # a span's linear colours (:func:`shade_span`)
         for row in range(band, height, n_bands):
-            for col in range(width):
+            col = 0
+            while col < width:
                 k = frags.tri_index[row, col]
+                end = col + 1
+                while spans and end < width and frags.tri_index[row, end] == k:
+                    end += 1
                 if k == EMPTY:
-                    for c in range(3):
-                        rgb[row, col, c] = background[c]
-                    continue
-                r, g, b = fragment_colour(k, frags.bary[row, col, 0], frags.bary[row, col, 1], frags, geo, materials,
-                                          textures, lights, lit)
-                rgb[row, col, 0] = unorm8(r)
-                rgb[row, col, 1] = unorm8(g)
-                rgb[row, col, 2] = unorm8(b)
+                    for c in range(col, end):
+                        rgb[row, c, 0], rgb[row, c, 1], rgb[row, c, 2] = background[0], background[1], background[2]
+                else:
+                    shade_span(k, row, col, end, frags, geo, inputs, colour, rgb)
+                col = end
 
 
 def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, rgb: np.ndarray,
-          n_bands: int | None = None) -> None:
+          n_bands: int | None = None, spans: bool = True) -> None:
     """Shade the visibility buffer ``frags`` into ``rgb`` (H, W, 3) uint8, window rows (the
     Python wrapper). ``background`` is the 8-bit clear colour; ``n_bands`` defaults to
-    :func:`renderer.bands.shading_bands`."""
+    :func:`renderer.bands.shading_bands`; ``spans=False`` shades pixel by pixel (the plain
+    path, for tests)."""
     height = frags.tri_index.shape[0]
     shade_rows(frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, background,
-               shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height)), rgb)
+               shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height)), bool(spans), rgb)

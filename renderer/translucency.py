@@ -3,7 +3,7 @@
 Opaque objects are drawn first, exactly as without translucency (z-buffer, visibility
 buffer, :func:`renderer.shading.shade`). Then the triangles of translucent objects are
 scan-converted with the same rules (:func:`renderer.raster.scanline_span`, the top-left
-rule, the 24-bit depth of :func:`renderer.raster.pixel_fragment`) into a **fragment list**
+rule, the 24-bit integer depth of :func:`renderer.raster.pixel_fragment`) into a **fragment list**
 per pixel: every fragment not behind the opaque surface there (LEQUAL against the opaque
 depth), in draw order. Translucent fragments write no depth (neither does VTK's). Two
 passes: count the fragments of every pixel, then fill them in at prefix-sum offsets.
@@ -38,7 +38,7 @@ import numpy as np
 from renderer.jit import njit, prange
 
 from renderer.bands import first_row_of_band, raster_bands, shading_bands
-from renderer.raster import FILL_RULES, pixel_fragment, row_span, set_up
+from renderer.raster import DEPTH_CLEAR, FILL_RULES, pixel_fragment, row_span, set_up
 from renderer.shading import Fragments, ShadingInputs, fragment_colour, unorm8
 from renderer.workspace import empty
 
@@ -51,9 +51,10 @@ class FragmentLists(NamedTuple):
 
     count (H, W) fragments per pixel; start (H, W) where a pixel's list starts in the flat
     arrays (prefix sums of ``count``); tri (F,) clipped triangle, bary (F, 2) screen-space
-    weights of its vertices 1 and 2, z (F,) 24-bit window depth of each fragment;
+    weights of its vertices 1 and 2, z (F,) int32 24-bit integer depth of each fragment;
     longest: the longest list (at least 1), for the compositing scratch; opaque_depth (H, W)
-    the opaque z-buffer the lists were cut against (1.0 where no opaque surface is behind).
+    the opaque integer z-buffer the lists were cut against (:data:`~renderer.raster.DEPTH_CLEAR` where no
+    opaque surface is behind).
     """
 
     count: np.ndarray
@@ -262,7 +263,7 @@ def composite_pixel(mode, fragments, m, behind, opaque_behind, out, order, acc, 
 def shade_translucent(frags, lists, mode, geo, materials, textures, lights, lit, n_bands, rgb):
     """Colour every pixel's fragment list and composite it over ``rgb`` (the loop kernel).
 
-    ``frags`` holds the translucent clipped triangles' tables (its tri_index and bary are
+    ``frags`` holds the translucent clipped triangles' tables (its tri_index and plane are
     not read); ``lists`` the :class:`FragmentLists`; alpha is each object's
     ``materials.opacity``; ``rgb`` (H, W, 3) uint8 holds the opaque result and receives the composite. Rows are
     independent, dealt out to ``n_bands`` bands (:mod:`renderer.bands`).
@@ -290,7 +291,7 @@ def shade_translucent(frags, lists, mode, geo, materials, textures, lights, lit,
                     fragments[j, DEPTH] = lists.z[i]
                 for c in range(3):
                     behind[c] = rgb[row, col, c]
-                composite_pixel(mode, fragments, m, behind, lists.opaque_depth[row, col] < 1.0, out, order, acc,
+                composite_pixel(mode, fragments, m, behind, lists.opaque_depth[row, col] < DEPTH_CLEAR, out, order, acc,
                                 layers)
                 for c in range(3):
                     rgb[row, col, c] = out[c]
@@ -312,13 +313,13 @@ def fragment_lists(tri_fixed, tri_window, opaque_depth, fill_rule="top-left", de
     count = empty(ws, "translucency.count", (height, width), np.int64)
     start = empty(ws, "translucency.start", (height, width), np.int64)
     collect_fragments(setup, n_bands, rule, bool(depth_test), opaque_depth, count, start, np.empty(0, np.int64),
-                      np.empty((0, 2)), np.empty(0))
+                      np.empty((0, 2)), np.empty(0, np.int32))
     flat = start.reshape(-1)
     flat[0] = 0
     np.cumsum(count.reshape(-1)[:-1], out=flat[1:])
     total = int(flat[-1] + count[-1, -1])
     lists = FragmentLists(count, start, empty(ws, "translucency.frag_tri", total, np.int64),
-                          empty(ws, "translucency.frag_bary", (total, 2)), empty(ws, "translucency.frag_z", total),
+                          empty(ws, "translucency.frag_bary", (total, 2)), empty(ws, "translucency.frag_z", total, np.int32),
                           max(int(count.max()), 1), opaque_depth)
     if total:
         collect_fragments(setup, n_bands, rule, bool(depth_test), opaque_depth, *lists[:5])
@@ -339,7 +340,7 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
     fill_rule, depth_test, cull_back = rules if rules is not None else ("top-left", True, False)
     front, lists = fragment_lists(clipped.tri_fixed, clipped.tri_window, opaque_depth, fill_rule, depth_test,
                                   cull_back, ws=ws)
-    frags = Fragments(np.empty((0, 0), np.int64), np.empty((0, 0, 2)), front, np.ascontiguousarray(clipped.tri_clip),
+    frags = Fragments(np.empty((0, 0), np.int32), np.empty((0, 11)), front, np.ascontiguousarray(clipped.tri_clip),
                       np.ascontiguousarray(clipped.clip_bary), np.ascontiguousarray(clipped.clip_source),
                       bool(perspective))
     shade_translucent(frags, lists, MODES[mode], geo, inputs.materials, inputs.textures,

@@ -263,13 +263,9 @@ def cmd_scenes(args) -> int:
 
 
 def cmd_bench(args) -> int:
-    from compare.bench import bench
+    from lab.app.bench_command import run_bench
 
-    r = bench(_load(args), repeat=args.repeat)
-    print(f"{r['scene']} at {r['size'][0]}x{r['size'][1]}, {r['triangles']} triangles, median of {r['repeat']}:")
-    print(f"  scanlab {r['ours_ms']:.2f} ms/frame, VTK (llvmpipe) {r['vtk_ms']:.2f} ms/frame: "
-          f"VTK/scanlab = {r['vtk_over_ours']:.2f}")
-    return 0
+    return run_bench(args)
 
 
 def cmd_demo(args) -> int:
@@ -414,9 +410,24 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("scenes", help="list the preset scenes and the built-in shapes with their parameters")
     p.set_defaults(func=cmd_scenes)
 
-    p = sub.add_parser("bench", help="frame time of scanlab and of VTK for one scene, in one process")
-    _scene_args(p)
-    p.add_argument("--repeat", type=_count, default=30, help="timed frames per renderer, at least 1 (default 30)")
+    p = sub.add_parser("bench", help="frame time, memory and start-up of scanlab against VTK, in one process",
+                       description="Times both renderers on the same scenes, frames alternating after a warm-up, "
+                                   "and prints median/min/max ms and the median ratio ours/VTK (< 1: scanlab "
+                                   "is faster). With no SCENES: issue 15's benchmark set at 512x512 and 1024x1024.")
+    p.add_argument("scenes", nargs="*", metavar="SCENE",
+                   help="names of the benchmark set (see --list), presets, shapes or scene files")
+    p.add_argument("--size", type=_size, action="append", metavar="WxH", help="image size (repeatable)")
+    p.add_argument("--shading", choices=SHADINGS, help="override every object's shading")
+    p.add_argument("--model", choices=MODELS, help="override every object's reflection model")
+    p.add_argument("--repeat", type=_count, default=15, help="timed pairs of frames per scene and size (default 15)")
+    p.add_argument("--json", metavar="FILE", help="also write every figure to FILE as JSON")
+    p.add_argument("--markdown", metavar="FILE", help="also write the table to FILE (between its bench markers)")
+    p.add_argument("--memory", choices=["largest", "all", "none"], default="largest",
+                   help="peak memory in child processes: for the largest scene only (default), all, or none")
+    p.add_argument("--no-startup", action="store_true", help="skip the cold/warm start-up measurement")
+    p.add_argument("--contention", action="store_true",
+                   help="also time our frames with 1 and 2 threads while another process keeps one core busy")
+    p.add_argument("--list", action="store_true", help="list the benchmark set and exit")
     p.set_defaults(func=cmd_bench)
 
     p = sub.add_parser("export", help="write the exact triangles both renderers draw (.ply .obj .stl .vtp), "

@@ -23,6 +23,7 @@ from renderer.reflection.classic_model import classic_lighting
 from renderer.reflection.materials import Materials
 from renderer.reflection.opengl_model import opengl_lighting
 from renderer.reflection.vtk_model import vtk_lighting
+from renderer.reflection.vtk_spans import store8, vtk_normal_only, vtk_span, vtk_span_applies, vtk_span_colours
 
 REFLECTION_MODELS = {m.name: m for m in (vtk_model.MODEL, opengl_model.MODEL, classic_model.MODEL)}
 """Model name (the scene's ``model``) → its :class:`~renderer.reflection.materials.ReflectionModel`."""
@@ -43,6 +44,43 @@ def reflect(n, p, o, materials, lights):
     if model == OPENGL:
         return opengl_lighting(n, p, o, materials, lights)
     return classic_lighting(n, p, o, materials, lights)
+
+
+@njit(cache=True, inline="always")
+def span_applies(o, materials, lights):
+    """True when object ``o``'s model has a span kernel (:mod:`renderer.spans`) for these
+    lights; else shading lights it pixel by pixel with :func:`reflect`. Only the vtk model
+    has one (:mod:`~renderer.reflection.vtk_spans`)."""
+    return materials.model[o] == VTK and vtk_span_applies(o, materials, lights)
+
+
+@njit(cache=True, inline="always")
+def span_normal_only(o, materials, lights):
+    """True when the span kernel's colour depends on the normal alone (one colour for a
+    span with a constant normal)."""
+    return vtk_normal_only(o, materials, lights)
+
+
+@njit(cache=True, inline="always")
+def reflect_span(o, materials, lights, consts, face, count, colour, out):
+    """The span kernel of object ``o``'s model (only where :func:`span_applies`): the
+    span's ``count`` pixels lit and stored as 8 bits into ``out`` (count, 3); ``consts``
+    and ``face`` from :func:`renderer.spans.span_setup`; ``colour`` (3, ≥ count) float32 scratch."""
+    vtk_span(o, materials, lights, consts, face, count, colour, out)
+
+
+@njit(cache=True, inline="always")
+def span_colours(o, materials, lights, consts, face, count, colour):
+    """The span kernel without the store: the span's ``count`` linear colours into
+    ``colour`` (3, ≥ count) float32 (for a texture to modulate before
+    :func:`store_span` stores them)."""
+    vtk_span_colours(o, materials, lights, consts, face, count, colour)
+
+
+@njit(cache=True, inline="always")
+def store_span(colour, count, out):
+    """``colour`` (3, ≥ count) linear float32 → ``out`` (count, 3) as the framebuffer's 8 bits."""
+    store8(colour, count, out)
 
 
 def material_table(scene) -> Materials:

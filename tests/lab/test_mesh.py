@@ -1,6 +1,8 @@
 """The mesh model: bounds as VTK computes them; polygons and strips cut into triangles as VTK draws them."""
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from lab.mesh import Mesh, fan_triangles, strip_triangles, unfanned_polygons
@@ -64,3 +66,13 @@ def test_unfanned_polygons_in_any_plane():
     offsets = [0, 5, 10, 15, 20]
     connectivity = [0, 1, 2, 3, 4, 1, 2, 3, 4, 0, 0, 4, 3, 2, 1, 1, 0, 4, 3, 2]  # and both reversed, same apex
     assert unfanned_polygons(points, offsets, connectivity).tolist() == [1, 3]
+
+
+def test_bounds_are_worked_out_once_and_handed_out_as_copies():
+    m = Mesh(np.array([[0.0, 0, 0], [1, 0, 0], [0, 2, 0]]), np.array([[0, 1, 2]]))
+    first = m.bounds()
+    first[:] = 99.0  # a caller scribbling on its copy
+    np.testing.assert_array_equal(m.bounds(), [0, 1, 0, 2, 0, 0])
+    assert m.bounds() is not m.bounds()
+    moved = replace(m, points=m.points + 1.0)  # a changed mesh is a new mesh, with its own bounds
+    np.testing.assert_array_equal(moved.bounds(), [1, 2, 1, 3, 1, 1])

@@ -172,3 +172,22 @@ def test_random_triangles_clip_into_the_visible_volume(seed):
     for t in np.flatnonzero(inside):
         assert (source == t).sum() == 1
         np.testing.assert_array_equal(out[source == t][0], clip[t])
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_trivial_accept_and_reject_give_what_cutting_every_triangle_gives(seed):
+    """Outcodes only skip work: triangles wholly inside (vertices on a plane included), wholly
+    outside one plane, outside different planes (not rejected: cut) and straddling ones come out
+    exactly as when every triangle goes through all six planes."""
+    rng = np.random.default_rng(seed)
+    verts = rng.uniform(-2.0, 2.0, (300, 4))
+    verts[:, 3] = rng.uniform(0.5, 1.5, 300)
+    verts[:60, :3] = verts[:60, 3:4] * rng.uniform(-1, 1, (60, 3))  # inside
+    verts[60:80, 0] = verts[60:80, 3]  # exactly on the right plane x = w: inside
+    verts[80:100, 2] = -verts[80:100, 3] - 0.25  # all in front of the near plane
+    tris = np.concatenate([rng.integers(0, 80, (120, 3)), rng.integers(80, 100, (30, 3)), rng.integers(0, 300, (150, 3))])
+    fast = clip_triangles(verts, tris)
+    plain = clip_triangles(verts, tris, trivial=False)
+    assert len(fast[0]) > 0 and 0 < (fast[2] < 120).sum()
+    for a, b in zip(fast, plain):
+        np.testing.assert_array_equal(a, b)

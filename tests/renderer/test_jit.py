@@ -1,7 +1,7 @@
 """The compiled-kernel cache never serves code older than the sources (renderer/jit.py).
 
 The end-to-end case reproduces the stale-kernel bug: ``shade_rows`` (shading.py) inlines
-``vtk_lighting`` (reflection/vtk_model.py); editing only vtk_model.py must change the next render, in a
+``vtk_span`` (reflection/vtk_spans.py); editing only vtk_spans.py must change the next render, in a
 fresh process, while an unchanged tree starts from its warm cache.
 """
 from __future__ import annotations
@@ -69,10 +69,10 @@ def test_an_edit_to_a_callee_in_another_file_shows_in_the_next_render(tmp_path):
     assert warm["seconds"] < cold["seconds"]
     print(f"start-up with the kernel cache cold {cold['seconds']:.1f} s, warm {warm['seconds']:.1f} s")
 
-    lighting = tree / "renderer" / "reflection" / "vtk_model.py"
+    lighting = tree / "renderer" / "reflection" / "vtk_spans.py"
     source = lighting.read_text()
-    assert source.count("df = max(1e-6, n[2])") == 1
-    lighting.write_text(source.replace("df = max(1e-6, n[2])", "df = 0.5 * max(1e-6, n[2])"))
+    assert source.count("df = max(HEADLIGHT_FLOOR, nz)") == 1
+    lighting.write_text(source.replace("df = max(HEADLIGHT_FLOOR, nz)", "df = np.float32(0.5) * max(HEADLIGHT_FLOOR, nz)"))
     edited = render_in_fresh_process(tree)
     assert edited["misses"] > 0
     assert edited["image"] != cold["image"], "the headlight's halved diffuse term must show"

@@ -35,11 +35,22 @@ def triangle(verts_view, normals=None, w=(1.0, 1.0, 1.0), parallel=False):
 
 
 def fragments(geo, bary, front=True, perspective=False, clip_bary=None):
-    """Every pixel of a (H, W) image covered by the triangle, with screen-space weights ``bary`` (H, W, 2)."""
+    """Every pixel of a (H, W) image covered by the triangle, with screen-space weights ``bary`` (H, W, 2).
+
+    Each pixel gets a clipped copy of the triangle of its own whose set-up plane (vertex 0 at
+    the pixel's centre minus (l1, l2), edges (1, 0) and (0, 1)) gives exactly those weights there."""
     bary = np.asarray(bary, np.float64)
-    return Fragments(np.zeros(bary.shape[:2], np.int64), bary, np.array([front]), geo.verts_clip[None],
-                     np.eye(3)[None] if clip_bary is None else np.asarray(clip_bary, np.float64)[None],
-                     np.zeros(1, np.int64), perspective)
+    height, width = bary.shape[:2]
+    n = height * width
+    rows, cols = np.divmod(np.arange(n), width)
+    plane = np.zeros((n, 11))
+    plane[:, 0] = cols + 0.5 - bary[..., 0].reshape(-1)
+    plane[:, 1] = rows + 0.5 - bary[..., 1].reshape(-1)
+    plane[:, 2], plane[:, 5] = 1.0, 1.0
+    cb = np.eye(3) if clip_bary is None else np.asarray(clip_bary, np.float64)
+    return Fragments(np.arange(n, dtype=np.int32).reshape(height, width), plane, np.full(n, front),
+                     np.repeat(geo.verts_clip[None], n, axis=0), np.repeat(cb[None], n, axis=0),
+                     np.zeros(n, np.int64), perspective)
 
 
 def shade_all(frags, geo, mats, lit=None, textures=UNTEXTURED, lights=None, n_bands=None):
@@ -85,7 +96,7 @@ def test_vertex_colours_are_interpolated():
     (127.5, 63.75, 63.75) → (128, 64, 64); an empty pixel shows the background."""
     geo = triangle([[0, 0, -2], [1, 0, -2], [0, 1, -2]])
     frags = fragments(geo, [[[0.25, 0.25], [0.0, 0.0]]])
-    frags = frags._replace(tri_index=np.array([[0, -1]]))
+    frags = frags._replace(tri_index=np.array([[0, -1]], np.int32))
     lit = LitColours(np.c_[np.eye(3), np.zeros((3, 3))], np.zeros((1, 6)))
     rgb = shade_all(frags, geo, materials(0, 0, 0, 1, path=VERTEX_COLOUR), lit)
     assert rgb.tolist() == [[[128, 64, 64], [10, 20, 30]]]

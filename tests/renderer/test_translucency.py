@@ -12,7 +12,7 @@ from lab.scene import Camera, Image, Material, RenderSettings, Scene, SceneObjec
 from lab.matrices import model_matrix
 from lab.shapes import quad
 from renderer import render
-from renderer.raster import DEPTH_MAX
+from renderer.raster import DEPTH_CLEAR, DEPTH_MAX
 from renderer.translucency import (DEPTH_PEELING, MODES, OIT, SORTED, blend8, composite_pixel, depth_order,
                                    fragment_lists, half, mul8)
 from renderer.window import SUBPIXEL
@@ -128,32 +128,32 @@ def test_fragment_lists_count_every_translucent_fragment_in_draw_order():
     """Two copies of the corner triangle at depths .6 then .3 over an empty z-buffer: two fragments in
     each of the six pixels, the first drawn first; starts are the prefix sums of the counts."""
     fixed, window = triangles([(x, y, 0.6) for x, y in CORNER], [(x, y, 0.3) for x, y in CORNER])
-    front, lists = fragment_lists(fixed, window, np.ones((4, 4)))
+    front, lists = fragment_lists(fixed, window, np.full((4, 4), DEPTH_CLEAR, np.int32))
     assert front.tolist() == [True, True]
     np.testing.assert_array_equal(lists.count, np.where(INSIDE, 2, 0))
     np.testing.assert_array_equal(lists.start.reshape(-1), np.concatenate([[0], np.cumsum(lists.count)[:-1]]))
     assert lists.longest == 2
     first = lists.start[0, 0]
     assert lists.tri[first:first + 2].tolist() == [0, 1]
-    np.testing.assert_allclose(lists.z[first:first + 2], [np.floor(0.6 * DEPTH_MAX + 0.5) / DEPTH_MAX,
-                                                          np.floor(0.3 * DEPTH_MAX + 0.5) / DEPTH_MAX])
+    assert lists.z[first:first + 2].tolist() == [np.floor(0.6 * DEPTH_MAX + 0.5), np.floor(0.3 * DEPTH_MAX + 0.5)]
 
 
 def test_fragments_behind_the_opaque_surface_are_dropped_unless_the_depth_test_is_off():
     """An opaque surface at depth .4 everywhere: the copy at .6 is behind it, only the one at .3 stays."""
     fixed, window = triangles([(x, y, 0.6) for x, y in CORNER], [(x, y, 0.3) for x, y in CORNER])
-    _, lists = fragment_lists(fixed, window, np.full((4, 4), 0.4))
+    at_04 = np.full((4, 4), np.floor(0.4 * DEPTH_MAX + 0.5), np.int32)  # the 24-bit integer depth of 0.4
+    _, lists = fragment_lists(fixed, window, at_04)
     np.testing.assert_array_equal(lists.count, np.where(INSIDE, 1, 0))
     assert set(lists.tri.tolist()) == {1}
-    _, everything = fragment_lists(fixed, window, np.full((4, 4), 0.4), depth_test=False)
+    _, everything = fragment_lists(fixed, window, at_04, depth_test=False)
     np.testing.assert_array_equal(everything.count, np.where(INSIDE, 2, 0))
 
 
 def test_bands_do_not_change_the_lists():
     """One band of rows or four: the same counts, starts and fragments."""
     fixed, window = triangles([(x, y, 0.6) for x, y in CORNER], [(x, y, 0.3) for x, y in CORNER])
-    _, one = fragment_lists(fixed, window, np.ones((4, 4)), n_bands=1)
-    _, four = fragment_lists(fixed, window, np.ones((4, 4)), n_bands=4)
+    _, one = fragment_lists(fixed, window, np.full((4, 4), DEPTH_CLEAR, np.int32), n_bands=1)
+    _, four = fragment_lists(fixed, window, np.full((4, 4), DEPTH_CLEAR, np.int32), n_bands=4)
     for a, b in zip(one, four):
         assert np.array_equal(a, b)
 

@@ -1,0 +1,128 @@
+"""Spans: one triangle's run of visible pixels on one row, interpolated in float32, 8+ lanes at a time.
+
+Shading (:mod:`renderer.shading`) walks each row of the visibility buffer in **spans**,
+the runs of neighbouring pixels that show the same triangle. Everything constant along a
+span is worked out once, in float64, and handed to the per-pixel code as float32
+constants (:func:`span_setup`): where the triangle's weights stand and how they step per
+pixel, its clipped vertices' positions and normals. A model's span kernel
+(:mod:`renderer.reflection.vtk_spans`) then runs one loop over the span's pixels —
+interpolate (:func:`span_pixel`), light, store 8 bits — in float32 and without calls or
+early exits, which LLVM turns into SIMD code: llvmpipe shades 8 float32 lanes at a time,
+and VTK's shaders compute in float32 too.
+
+Interpolation (perspective-correct, as :func:`renderer.shading.fragment_weights`): the
+screen-space weights ``l0, l1, l2`` of the clipped triangle are affine along the row,
+``l_i = L_i + B_i·x`` with x the pixel's column counted from the triangle's **anchor
+column** (the pixel column of its first vertex), so a pixel gets the same bits whichever
+span it is shaded in; divided by the vertices' clip w they stay affine, ``b_i = l_i/w_i``;
+an attribute is ``(Σ b_i·A_i) / Σ b_i`` with ``A_i`` the clipped vertex's attribute (the
+source vertices' attributes mixed by its clipping weights). Screen-linear interpolation
+takes ``w_i = 1``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from renderer.jit import njit
+
+F0, F1 = np.float32(0.0), np.float32(1.0)
+
+
+@njit(cache=True, inline="always")
+def span_weights(k, row, c0, plane, tri_clip, perspective):
+    """Float64 ``(L0, B0, L1, B1, L2, B2, x)``: clipped triangle ``k``'s weights of its three
+    vertices on ``row`` at its anchor column and their step per pixel to the right, divided
+    by the vertices' clip w when ``perspective``; ``x`` is the span's first pixel ``c0``
+    counted from the anchor."""
+    x0, y0, e1x, e1y, e2x, e2y = plane[k, 0], plane[k, 1], plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5]
+    inv_a2 = 1.0 / (e1x * e2y - e2x * e1y)
+    anchor = np.floor(x0)
+    py = row + 0.5 - y0
+    px = anchor + 0.5 - x0
+    l1, l2 = (px * e2y - e2x * py) * inv_a2, (e1x * py - px * e1y) * inv_a2
+    b1, b2 = e2y * inv_a2, -e1y * inv_a2
+    l0, b0 = 1.0 - l1 - l2, -b1 - b2
+    x = c0 - anchor
+    if perspective:
+        w0, w1, w2 = 1.0 / tri_clip[k, 0, 3], 1.0 / tri_clip[k, 1, 3], 1.0 / tri_clip[k, 2, 3]
+        return l0 * w0, b0 * w0, l1 * w1, b1 * w1, l2 * w2, b2 * w2, x
+    return l0, b0, l1, b1, l2, b2, x
+
+
+@njit(cache=True, inline="always")
+def clipped_vertex(values, k, i, cb, i0, i1, i2):
+    """``values`` (per source vertex, 3 columns) at vertex ``i`` of clipped triangle ``k``, as
+    float32: its clipping weights ``cb[k, i]`` mix the source triangle's three vertices."""
+    w0, w1, w2 = cb[k, i, 0], cb[k, i, 1], cb[k, i, 2]
+    return (np.float32(w0 * values[i0, 0] + w1 * values[i1, 0] + w2 * values[i2, 0]),
+            np.float32(w0 * values[i0, 1] + w1 * values[i1, 1] + w2 * values[i2, 1]),
+            np.float32(w0 * values[i0, 2] + w1 * values[i1, 2] + w2 * values[i2, 2]))
+
+
+@njit(cache=True, inline="always")
+def face_toward_viewer(geo, s):
+    """Source triangle ``s``'s unit plane normal turned toward the viewer: perspective,
+    so that n·P ≤ 0 at its first vertex P (the sign of n·P is the same over the whole
+    plane); parallel, so that n.z ≥ 0. One decision per triangle."""
+    nx, ny, nz = geo.face_normals[s, 0], geo.face_normals[s, 1], geo.face_normals[s, 2]
+    if geo.parallel:
+        away = nz < 0.0
+    else:
+        p = geo.verts_view[geo.triangles[s, 0]]
+        away = nx * p[0] + ny * p[1] + nz * p[2] > 0.0
+    return (-nx, -ny, -nz) if away else (nx, ny, nz)
+
+
+@njit(cache=True, inline="always")
+def span_setup(k, row, c0, frags, geo, face):
+    """The float32 constants of clipped triangle ``k``'s span on ``row`` from column ``c0``:
+    ``(weights, positions, normals, face_normal, sign)``.
+
+    weights: (L0, B0, L1, B1, L2, B2, x) (:func:`span_weights`, x the first pixel's
+    offset from the anchor); positions and normals: the clipped vertices' view-space
+    positions and (unnormalised) normals, 9 values each; ``face``: use the triangle's own
+    plane normal turned toward the viewer (``face_normal``) instead of interpolating;
+    sign: −1 on a back face (two-sided lighting), else 1.
+    """
+    s = frags.clip_source[k]
+    tris, cb = geo.triangles, frags.clip_bary
+    i0, i1, i2 = tris[s, 0], tris[s, 1], tris[s, 2]
+    L0, B0, L1, B1, L2, B2, x = span_weights(k, row, c0, frags.plane, frags.tri_clip, frags.perspective)
+    weights = (np.float32(L0), np.float32(B0), np.float32(L1), np.float32(B1), np.float32(L2), np.float32(B2),
+               np.float32(x))
+    pa, pb, pc = (clipped_vertex(geo.verts_view, k, 0, cb, i0, i1, i2), clipped_vertex(geo.verts_view, k, 1, cb, i0, i1, i2),
+                  clipped_vertex(geo.verts_view, k, 2, cb, i0, i1, i2))
+    if face:
+        fx, fy, fz = face_toward_viewer(geo, s)
+        na = nb = nc = (F0, F0, F0)
+    else:
+        fx = fy = fz = 0.0
+        na, nb, nc = (clipped_vertex(geo.normals_view, k, 0, cb, i0, i1, i2),
+                      clipped_vertex(geo.normals_view, k, 1, cb, i0, i1, i2),
+                      clipped_vertex(geo.normals_view, k, 2, cb, i0, i1, i2))
+    sign = F1 if frags.front[k] or face else -F1
+    return weights, (pa, pb, pc), (na, nb, nc), (np.float32(fx), np.float32(fy), np.float32(fz)), sign
+
+
+@njit(cache=True, inline="always")
+def span_pixel(consts, i, face):
+    """Pixel ``i`` of the span (0 = its first): view-space position ``(px, py, pz)`` and unit
+    normal ``(nx, ny, nz)`` on the viewer's side, float32 (see the module docstring)."""
+    weights, positions, normals, face_normal, sign = consts
+    fl0, fb0, fl1, fb1, fl2, fb2, first = weights
+    x = first + np.float32(i)
+    w0, w1, w2 = fl0 + fb0 * x, fl1 + fb1 * x, fl2 + fb2 * x
+    inv = F1 / (w0 + w1 + w2)
+    a, b, c = positions
+    px = (w0 * a[0] + w1 * b[0] + w2 * c[0]) * inv
+    py = (w0 * a[1] + w1 * b[1] + w2 * c[1]) * inv
+    pz = (w0 * a[2] + w1 * b[2] + w2 * c[2]) * inv
+    if face:
+        return px, py, pz, face_normal[0], face_normal[1], face_normal[2]
+    a, b, c = normals
+    nx = (w0 * a[0] + w1 * b[0] + w2 * c[0]) * inv
+    ny = (w0 * a[1] + w1 * b[1] + w2 * c[1]) * inv
+    nz = (w0 * a[2] + w1 * b[2] + w2 * c[2]) * inv
+    length = np.sqrt(nx * nx + ny * ny + nz * nz)
+    scale = sign / length if length > F0 else sign
+    return px, py, pz, nx * scale, ny * scale, nz * scale

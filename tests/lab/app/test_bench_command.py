@@ -1,0 +1,46 @@
+"""``scanlab bench``: the command's list, its checks, and where it writes the table."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+from compare.bench_scenes import BENCH_SCENES
+from lab.app.bench_command import END, START, write_between_markers
+
+
+def scanlab(*args):
+    return subprocess.run([sys.executable, "-m", "lab", *args], capture_output=True, text=True, timeout=600)
+
+
+def test_list_names_the_default_set():
+    done = scanlab("bench", "--list")
+    assert done.returncode == 0
+    assert done.stdout.split() == list(BENCH_SCENES)
+
+
+def test_a_misspelt_scene_fails_at_once_in_one_line():
+    done = scanlab("bench", "ico5-phong", "icosfere", "--no-startup")
+    assert done.returncode == 2
+    assert len(done.stderr.strip().splitlines()) == 1 and "icosfere" in done.stderr
+
+
+def test_a_run_writes_json_and_the_table_between_the_markers(tmp_path):
+    page = tmp_path / "performance.md"
+    page.write_text(f"# Performance\n\nintro\n\n{START}\nold table\n{END}\n\nafter\n")
+    out = tmp_path / "bench.json"
+    done = scanlab("bench", "icosphere:level=1", "--size", "64x48", "--repeat", "2", "--memory", "none",
+                   "--no-startup", "--json", str(out), "--markdown", str(page))
+    assert done.returncode == 0, done.stderr
+    run = json.loads(out.read_text())
+    assert [r["scene"] for r in run["rows"]] == ["icosphere:level=1"]
+    text = page.read_text()
+    assert "old table" not in text and text.startswith("# Performance\n\nintro\n") and text.endswith("\n\nafter\n")
+    assert "| icosphere:level=1 | 64x48 | 80 |" in text
+
+
+def test_markers_are_added_to_a_page_without_them(tmp_path):
+    page = tmp_path / "p.md"
+    page.write_text("text")
+    write_between_markers(page, "T")
+    assert page.read_text() == f"text\n{START}\nT\n{END}\n"

@@ -1,0 +1,129 @@
+"""Shading in spans (renderer/spans.py, reflection/vtk_spans.py) gives the same bytes as shading
+pixel by pixel, and one thread the same as two, on scenes made to hit the spans' edge cases:
+spans of one pixel and of a whole row, triangles cut by the near plane and the viewport, back
+faces, parallel projection, screen-linear interpolation, every light complexity the span kernel
+covers (and one it leaves to the scalar kernel), flat, gouraud and phong."""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numba
+import numpy as np
+import pytest
+
+from lab.matrices import model_matrix
+from lab.normals import radial_normals
+from lab.scene import Camera, Image, Light, Material, RenderSettings, Scene, SceneObject, headlight
+from lab.shapes import cube, icosphere, quad
+from renderer import RenderOptions, render
+
+SCENE_LIGHT = Light(kind="scene", position=(3.0, 4.0, 5.0))
+LIGHTS = {
+    "headlight": (headlight(),),
+    "one-scene-light": (SCENE_LIGHT,),
+    "two-lights": (SCENE_LIGHT, Light(kind="camera", position=(-1.0, 0.5, 1.0), color=(0.4, 0.6, 1.0))),
+    "unlit": (replace(SCENE_LIGHT, on=False),),
+    "positional": (replace(SCENE_LIGHT, positional=True),),  # complexity 3: the scalar kernel
+}
+
+
+def ball(level=3):
+    mesh = icosphere(level=level)
+    return replace(mesh, point_normals=radial_normals(mesh.points))
+
+
+def scene(shading, lights, camera=None, size=(97, 61), objects=None, interpolation="perspective"):
+    objects = objects or (
+        SceneObject(mesh=ball(), material=Material(color=(0.6, 0.7, 0.9), specular=0.4, specular_power=30.0),
+                    shading=shading),
+        # a far, finely divided sphere: spans of one or two pixels
+        SceneObject(mesh=ball(5), material=Material(color=(0.9, 0.5, 0.2), specular=0.3), shading=shading,
+                    model_to_world=model_matrix(scale=(0.3, 0.3, 0.3), translate=(1.8, 0.6, -3.0))),
+        # a large quad crossing the near plane and every side of the viewport, seen from behind
+        SceneObject(mesh=replace(quad(40.0), point_normals=np.tile([0.0, 0.0, 1.0], (4, 1))),
+                    material=Material(color=(0.3, 0.8, 0.4), specular=0.2), shading=shading,
+                    model_to_world=model_matrix(rotate=(100.0, 10.0, 0.0), translate=(0.0, -0.5, 0.0))),
+    )
+    camera = camera or Camera(position=(0.6, 0.9, 3.2), view_angle=40.0, clipping_range=(0.5, 30.0))
+    return Scene(image=Image(size=size, background=(0.1, 0.1, 0.15)), camera=camera, lights=lights,
+                 objects=objects, render=RenderSettings(interpolation=interpolation))
+
+
+CASES = [(shading, light) for shading in ("flat", "phong", "gouraud") for light in LIGHTS]
+
+
+@pytest.mark.parametrize("shading, light", CASES, ids=[f"{s}-{l}" for s, l in CASES])
+def test_spans_give_the_bytes_of_pixel_by_pixel_shading(shading, light):
+    s = scene(shading, LIGHTS[light])
+    fast = render(s)
+    plain = render(s, RenderOptions(spans=False))
+    assert fast.coverage.mean() > 0.5  # the scene fills the frame: every kind of span is there
+    np.testing.assert_array_equal(fast.rgb, plain.rgb)
+
+
+@pytest.mark.parametrize("interpolation", ["perspective", "screen"])
+def test_parallel_projection_and_screen_linear_interpolation_keep_the_bytes(interpolation):
+    s = scene("phong", LIGHTS["one-scene-light"], interpolation=interpolation,
+              camera=Camera(position=(0.6, 0.9, 3.2), parallel=True, parallel_scale=1.3, clipping_range=(0.5, 30.0)))
+    np.testing.assert_array_equal(render(s).rgb, render(s, RenderOptions(spans=False)).rgb)
+
+
+def test_spans_as_wide_as_the_image_keep_the_bytes():
+    """An axis-aligned cube face filling the frame under a parallel camera: spans of the whole
+    row, pixel-aligned edges."""
+    s = scene("phong", LIGHTS["one-scene-light"], size=(64, 48),
+              objects=(SceneObject(mesh=cube(4.0), shading="flat"),),
+              camera=Camera(position=(0.0, 0.0, 5.0), parallel=True, parallel_scale=1.0, clipping_range=(0.5, 30.0)))
+    fast = render(s)
+    assert fast.coverage.all()
+    np.testing.assert_array_equal(fast.rgb, render(s, RenderOptions(spans=False)).rgb)
+
+
+def test_one_thread_and_two_give_the_same_bytes():
+    s = scene("phong", LIGHTS["two-lights"], size=(160, 120))
+    reference = render(s)
+    saved = numba.get_num_threads()
+    try:
+        numba.set_num_threads(1)
+        serial = render(s)
+    finally:
+        numba.set_num_threads(saved)
+    np.testing.assert_array_equal(serial.rgb, reference.rgb)
+    np.testing.assert_array_equal(serial.depth, reference.depth)
+
+
+def checker(n=16, seed=3):
+    """A small random texture: neighbouring texels differ, so a texel chosen one off shows."""
+    return np.random.default_rng(seed).random((n, 2 * n, 3))
+
+
+TEXTURE_CASES = [(f, w, shading) for f in ("nearest", "linear") for w in ("repeat", "clamp")
+                 for shading in ("flat", "phong")]
+
+
+@pytest.mark.parametrize("filter_mode, wrap, shading", TEXTURE_CASES, ids=["-".join(c) for c in TEXTURE_CASES])
+def test_textured_spans_give_the_bytes_of_pixel_by_pixel_shading(filter_mode, wrap, shading):
+    """Textured objects: lit in the span loop, multiplied by the texels, stored; the same bytes
+    as one pixel at a time. A sphere with its longitude seam in view, texture coordinates past
+    1 (repeat and clamp differ there), a quad crossing the near plane and the viewport seen
+    from behind, a far sphere of one- and two-pixel spans."""
+    from lab.texture import Texture
+
+    sphere = icosphere(level=3, uv=1)
+    sphere = replace(sphere, point_normals=radial_normals(sphere.points))
+    tex = Texture(checker(), filter=filter_mode, wrap=wrap)
+    board = replace(quad(40.0), point_normals=np.tile([0.0, 0.0, 1.0], (4, 1)),
+                    tcoords=np.array([[-1.5, -1.5], [2.5, -1.5], [2.5, 2.5], [-1.5, 2.5]]))
+    material = Material(color=(1.0, 1.0, 1.0), specular=0.4, specular_power=30.0)
+    objects = (
+        SceneObject(mesh=sphere, material=material, shading=shading, texture=tex,
+                    model_to_world=model_matrix(rotate=(0.0, 200.0, 0.0))),
+        SceneObject(mesh=sphere, material=material, shading=shading, texture=tex,
+                    model_to_world=model_matrix(scale=(0.3, 0.3, 0.3), translate=(1.8, 0.6, -3.0))),
+        SceneObject(mesh=board, material=material, shading=shading, texture=tex,
+                    model_to_world=model_matrix(rotate=(100.0, 10.0, 0.0), translate=(0.0, -0.5, 0.0))),
+    )
+    s = scene(shading, LIGHTS["one-scene-light"], objects=objects)
+    fast = render(s)
+    assert fast.coverage.mean() > 0.5
+    np.testing.assert_array_equal(fast.rgb, render(s, RenderOptions(spans=False)).rgb)
