@@ -8,7 +8,6 @@ line on stderr and exit status 2. ``compare`` and ``demo`` judge against the par
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import re
 import sys
@@ -18,6 +17,7 @@ from lab.app.lesson_site import build as lessons_site
 from lab.app.demo import scene_name
 from lab.app.exercises.command import add_parser as add_exercise_parser
 from lab.app.live import live_command
+from lab.app.option_types import image_size, number, whole
 from lab.app.sweep import sweep_command
 from lab.loading import LARGE_SIZE, MAX_SIZE, SceneError, load_scene, size_problem
 from lab.presets import SCENES_DIR, preset_description, preset_names
@@ -69,39 +69,6 @@ def _option_hint(parser: argparse.ArgumentParser, unknown: list[str]) -> str:
     return ""
 
 
-def _size(text: str) -> tuple[int, int]:
-    """``WxH`` → (W, H); the limit (MAX_SIZE, or LARGE_SIZE with --allow-large) is checked in _load."""
-    try:
-        w, h = (int(v) for v in text.lower().split("x"))
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT such as 512x384, got {text!r}") from None
-    if w < 1 or h < 1:
-        raise argparse.ArgumentTypeError(f"width and height must be at least 1, got {text!r}")
-    return w, h
-
-
-def _count(text: str) -> int:
-    """A whole number of at least 1 (``--repeat``, ``--cases``)."""
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
-    if n < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, got {text!r}")
-    return n
-
-
-def _limit(text: str) -> float:
-    """A finite number of at least 0 (``--fail-above``)."""
-    try:
-        v = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
-    if not (math.isfinite(v) and v >= 0):
-        raise argparse.ArgumentTypeError(f"expected a finite number of at least 0, got {text!r}")
-    return v
-
-
 def _bar(text: str) -> tuple[str, float]:
     """``NAME=VALUE``, a bar of :mod:`compare.verdict` (checked there)."""
     from compare.verdict import parse_bar
@@ -124,7 +91,7 @@ def _allow_large_arg(p: argparse.ArgumentParser) -> None:
 def _scene_args(p: argparse.ArgumentParser) -> None:
     p.add_argument("scene", help=SCENE_HELP)
     p.add_argument("--shading", choices=SHADINGS, help="override every object's shading")
-    p.add_argument("--size", type=_size, metavar="WxH",
+    p.add_argument("--size", type=image_size, metavar="WxH",
                    help=f"override the image size, e.g. 640x480 (at most {MAX_SIZE}x{MAX_SIZE} without --allow-large)")
     p.add_argument("--model", choices=MODELS, help="override every object's reflection model: vtk (VTK's own), "
                                                    "opengl (fixed-function OpenGL) or classic (the course's)")
@@ -388,7 +355,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="judge against this bar too, or instead of a parity bar of that name (repeatable); names: "
                         "coverage_mismatch, pixels_over_1 (fractions 0..1), mean, p999, max (ΔE2000), "
                         "max_channel_diff, depth_over_1_step")
-    p.add_argument("--fail-above", type=_limit, metavar="DE",
+    p.add_argument("--fail-above", type=number(0.0), metavar="DE",
                    help="also fail when the 99.9th percentile ΔE2000 exceeds DE (the same as --bar p999=DE)")
     p.add_argument("--stages", action="store_true",
                    help="also write stages.png: both depth buffers and their difference, triangle IDs, the "
@@ -416,10 +383,10 @@ def build_parser() -> argparse.ArgumentParser:
                                    "is faster). With no SCENES: issue 15's benchmark set at 512x512 and 1024x1024.")
     p.add_argument("scenes", nargs="*", metavar="SCENE",
                    help="names of the benchmark set (see --list), presets, shapes or scene files")
-    p.add_argument("--size", type=_size, action="append", metavar="WxH", help="image size (repeatable)")
+    p.add_argument("--size", type=image_size, action="append", metavar="WxH", help="image size (repeatable)")
     p.add_argument("--shading", choices=SHADINGS, help="override every object's shading")
     p.add_argument("--model", choices=MODELS, help="override every object's reflection model")
-    p.add_argument("--repeat", type=_count, default=15, help="timed pairs of frames per scene and size (default 15)")
+    p.add_argument("--repeat", type=whole(1), default=15, help="timed pairs of frames per scene and size (default 15)")
     p.add_argument("--json", metavar="FILE", help="also write every figure to FILE as JSON")
     p.add_argument("--markdown", metavar="FILE", help="also write the table to FILE (between its bench markers)")
     p.add_argument("--memory", choices=["largest", "all", "none"], default="largest",
@@ -456,7 +423,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("fuzz", help="feed mutated preset scene files to the loader; report any traceback",
                        description="Seeded random mutations of lab/scenes/*.toml, each loaded: it must give a scene "
                                    "or one clear SceneError line. Exit 1 if any case does not.")
-    p.add_argument("--cases", type=_count, default=10000, help="number of mutated files (default 10000)")
+    p.add_argument("--cases", type=whole(1), default=10000, help="number of mutated files (default 10000)")
     p.add_argument("--seed", type=int, default=0, help="seed; case i of seed s is always the same file (default 0)")
     p.add_argument("--save", default="out/fuzz", metavar="DIR",
                    help="folder for failing inputs, each with a .txt of what happened (default out/fuzz)")

@@ -14,6 +14,7 @@ import time
 from pathlib import Path
 
 from lab.app.exercises.sandbox import Limits
+from lab.app.option_types import number, whole
 
 
 class ExerciseUsageError(Exception):
@@ -137,9 +138,9 @@ def _common(p: argparse.ArgumentParser, lang_help: str) -> None:
 
 
 def _limit_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--time-limit", type=float, default=Limits.cpu_seconds, metavar="SECONDS",
+    p.add_argument("--time-limit", type=number(0.0, above=True, what="seconds", unit=" seconds"), default=Limits.cpu_seconds, metavar="SECONDS",
                    help=f"CPU seconds a submission may use (default {Limits.cpu_seconds:g}; wall clock: twice that + 5)")
-    p.add_argument("--memory-limit", type=int, default=Limits.memory_mb, metavar="MIB",
+    p.add_argument("--memory-limit", type=whole(64), default=Limits.memory_mb, metavar="MIB",
                    help=f"memory a submission may use, MiB (default {Limits.memory_mb})")
 
 
@@ -181,7 +182,7 @@ def add_parser(sub) -> None:
     q.add_argument("name", help="the exercise")
     q.add_argument("submissions", help="folder of the students' .py files")
     q.add_argument("--out", required=True, metavar="DIR", help="folder for grades.csv, index.html and panels/")
-    q.add_argument("--workers", type=int, default=os.cpu_count() or 1,
+    q.add_argument("--workers", type=whole(1), default=os.cpu_count() or 1,
                    help=f"submissions judged at once (default: the number of cores, {os.cpu_count()})")
     _common(q, "language of the page (default en)")
     _limit_options(q)

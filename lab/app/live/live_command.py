@@ -10,6 +10,8 @@ import errno
 import socket
 from pathlib import Path
 
+from lab.app.option_types import whole
+
 DESCRIPTION = """\
 Starts the live lab, a local web page: pick a scene (presets, the lessons' scenes, built-in
 shapes with their parameters, the files named here), change shading, reflection model,
@@ -20,16 +22,6 @@ Drag on our image to orbit the camera. "Save scene" writes a scene file into --s
 """
 
 
-def _port(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a port number, got {text!r}") from None
-    if not 0 <= value <= 65535:
-        raise argparse.ArgumentTypeError(f"expected a port number from 0 to 65535 (0: any free one), got {text!r}")
-    return value
-
-
 def add_parser(sub, usage_error) -> None:
     p = sub.add_parser("app", help="the live lab: a local web page where every control re-renders both renderers",
                        description=DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -38,7 +30,7 @@ def add_parser(sub, usage_error) -> None:
                         "or a mesh file (default course-phong)")
     p.add_argument("--open", action="append", default=[], metavar="FILE",
                    help="also offer this scene file or mesh file in the picker (repeatable)")
-    p.add_argument("--port", type=_port, default=8080, help="port to listen on (default 8080; 0: any free port)")
+    p.add_argument("--port", type=whole(0, 65535, "a port number", " (0: any free one)"), default=8080, help="port to listen on (default 8080; 0: any free port)")
     p.add_argument("--host", default="127.0.0.1",
                    help="address to listen on (default 127.0.0.1, this machine only; 0.0.0.0 opens it to the network)")
     p.add_argument("--save-dir", default=".", metavar="DIR",

@@ -12,6 +12,7 @@ import shlex
 import sys
 from pathlib import Path
 
+from lab.app.option_types import number, whole
 from lab.app.sweep.light_sets import LIGHT_SETS
 from lab.app.sweep.settings import GRID_KEYS
 
@@ -44,29 +45,6 @@ def _epilog() -> str:
             "--grid lights=headlight,spot --grid size=256x192 --out out/sweep")
 
 
-def _whole(least: int):
-    """An argparse type: a whole number of at least ``least``."""
-    def parse(text: str) -> int:
-        try:
-            value = int(text)
-        except ValueError:
-            raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
-        if value < least:
-            raise argparse.ArgumentTypeError(f"must be at least {least}, got {text!r}")
-        return value
-    return parse
-
-
-def _seconds(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected seconds, got {text!r}") from None
-    if not 0 < value < 1e7:
-        raise argparse.ArgumentTypeError(f"must be more than 0 seconds, got {text!r}")
-    return value
-
-
 def _bytes(text: str) -> int:
     """``8G``, ``512M``, ``2048K``, a number of bytes, or ``none``/``0`` (no limit)."""
     if text.lower() in ("none", "0"):
@@ -91,13 +69,13 @@ def add_parser(sub, usage_error: type[Exception]) -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, metavar="DIR", help="output folder; the same DIR resumes a sweep")
     p.add_argument("--scheduler", metavar="ADDRESS",
                    help="a running Dask scheduler, e.g. tcp://host:8786 (default: start a local cluster)")
-    p.add_argument("--workers", type=_whole(1), metavar="N",
+    p.add_argument("--workers", type=whole(1), metavar="N",
                    help=f"worker processes of the local cluster (default: the number of cores, {os.cpu_count()})")
-    p.add_argument("--timeout", type=_seconds, default=120.0, metavar="S",
+    p.add_argument("--timeout", type=number(0.0, above=True, what="seconds", unit=" seconds"), default=120.0, metavar="S",
                    help="time limit of one case in seconds (default 120); its process is then killed")
     p.add_argument("--memory-limit", type=_bytes, default=8 << 30, metavar="SIZE",
                    help="address-space limit of a case's process, e.g. 8G (default) or none")
-    p.add_argument("--worst", type=_whole(0), default=12, metavar="N",
+    p.add_argument("--worst", type=whole(0), default=12, metavar="N",
                    help="keep frames and draw panels for the N worst cases (default 12)")
     p.add_argument("--keep-all", action="store_true", help="keep frames and draw panels for every case")
     p.add_argument("--retry-errors", action="store_true",
