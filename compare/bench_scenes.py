@@ -69,8 +69,9 @@ def strips_to_triangles(strips: np.ndarray) -> np.ndarray:
 def read_strip_ply(data: bytes) -> Mesh:
     """A binary little-endian PLY of float x, y, z vertices and one ``tristrips`` element
     (``list int int vertex_indices``), as the Igea file is."""
-    end = data.index(b"end_header\n") + len(b"end_header\n")
-    header = data[:end].decode("ascii").splitlines()
+    mark = data.find(b"end_header\n")
+    end = mark + len(b"end_header\n")
+    header = data[:end].decode("ascii", "replace").splitlines() if mark >= 0 else []
     if "format binary_little_endian 1.0" not in header:
         raise MeshUnavailable("the public mesh is not the binary PLY expected")
     n_vertices = next(int(line.split()[2]) for line in header if line.startswith("element vertex"))

@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import os
 import platform
+import subprocess
 import time
 from pathlib import Path
 
@@ -54,7 +55,7 @@ def measure(args, say=print) -> dict:
         row["triangles"] = int(sum(o.mesh.n_triangles for o in scene.objects))
         row.update(time_frames(scene, repeat=args.repeat))
         if args.memory == "all":
-            row["memory"] = {side: peak_memory(side, name, size) for side in ("ours", "reference")}
+            _measure_memory(row, name, size, say)
         elif args.memory == "largest" and (largest is None or (row["triangles"], size) > largest[0]):
             largest = ((row["triangles"], size), row, name, size)
         run["rows"].append(row)
@@ -63,13 +64,14 @@ def measure(args, say=print) -> dict:
     if largest is not None:
         _, row, name, size = largest
         say(f"peak memory of {name} {row['size']} (two child processes) ...")
-        row["memory"] = {side: peak_memory(side, name, size) for side in ("ours", "reference")}
+        _measure_memory(row, name, size, say)
     if args.contention:
         from compare.bench import busy_core, thread_contention
 
         run["contention"] = []
+        drawn = [(n, s) for n, s in cases if any(r["scene"] == n and "error" not in r for r in run["rows"])]
         with busy_core():
-            for name, size in cases:
+            for name, size in drawn:
                 r = thread_contention(bench_scene(name, size).with_overrides(shading=args.shading, model=args.model),
                                       repeat=args.repeat)
                 run["contention"].append({"scene": name, "size": f"{size[0]}x{size[1]}", **r})
@@ -80,6 +82,14 @@ def measure(args, say=print) -> dict:
         run["startup_s"] = startup_seconds()
     run["load_after"] = _load_text()
     return run
+
+
+def _measure_memory(row: dict, name: str, size, say) -> None:
+    """Peak memory of each side into ``row["memory"]``; a child that failed is said in one line."""
+    try:
+        row["memory"] = {side: peak_memory(side, name, size) for side in ("ours", "reference")}
+    except (RuntimeError, subprocess.TimeoutExpired) as exc:
+        say(f"peak memory of {name} {row['size']} not measured: {exc}")
 
 
 def report(run: dict) -> str:

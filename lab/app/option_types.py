@@ -28,9 +28,11 @@ def whole(least: int = 1, most: int | None = None, what: str = "a whole number",
     return parse
 
 
-def number(least: float = 0.0, above: bool = False, what: str = "a number", unit: str = "") -> Callable[[str], float]:
-    """A type for a finite number of at least ``least`` (more than ``least`` when ``above``);
-    ``what`` names it when the text is no number, ``unit`` follows the bound (" seconds")."""
+def number(least: float = 0.0, above: bool = False, most: float | None = None, what: str = "a number",
+           unit: str = "") -> Callable[[str], float]:
+    """A type for a finite number of at least ``least`` (more than ``least`` when ``above``) and
+    at most ``most`` (no upper bound when None); ``what`` names it when the text is no number,
+    ``unit`` follows the bound (" seconds")."""
     def parse(text: str) -> float:
         try:
             value = float(text)
@@ -41,8 +43,14 @@ def number(least: float = 0.0, above: bool = False, what: str = "a number", unit
         if value < least or (above and value == least):
             bound = f"more than {least:g}" if above else f"at least {least:g}"
             raise argparse.ArgumentTypeError(f"must be {bound}{unit}, got {text!r}")
+        if most is not None and value > most:
+            raise argparse.ArgumentTypeError(f"must be at most {most:g}{unit}, got {text!r}")
         return value
     return parse
+
+
+seconds = number(0.0, above=True, most=1e6, what="seconds", unit=" seconds")
+"""A time limit: more than 0 and at most 10⁶ seconds (timers and ``signal.alarm`` take no more)."""
 
 
 def image_size(text: str) -> tuple[int, int]:

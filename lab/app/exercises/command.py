@@ -14,7 +14,7 @@ import time
 from pathlib import Path
 
 from lab.app.exercises.sandbox import Limits
-from lab.app.option_types import number, whole
+from lab.app.option_types import seconds, whole
 
 
 class ExerciseUsageError(Exception):
@@ -138,9 +138,9 @@ def _common(p: argparse.ArgumentParser, lang_help: str) -> None:
 
 
 def _limit_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--time-limit", type=number(0.0, above=True, what="seconds", unit=" seconds"), default=Limits.cpu_seconds, metavar="SECONDS",
+    p.add_argument("--time-limit", type=seconds, default=Limits.cpu_seconds, metavar="SECONDS",
                    help=f"CPU seconds a submission may use (default {Limits.cpu_seconds:g}; wall clock: twice that + 5)")
-    p.add_argument("--memory-limit", type=whole(64), default=Limits.memory_mb, metavar="MIB",
+    p.add_argument("--memory-limit", type=whole(64, 1 << 20, "a size in MiB"), default=Limits.memory_mb, metavar="MIB",
                    help=f"memory a submission may use, MiB (default {Limits.memory_mb})")
 
 

@@ -257,7 +257,7 @@ def run(start: str, files: tuple[str, ...], host: str, port: int, save_dir) -> i
 
     def ready(**_):
         lab.service.attach(get_event_loop())
-        shown = "127.0.0.1" if host in ("127.0.0.1", "localhost") else host
+        shown = "127.0.0.1" if host in ("127.0.0.1", "localhost") else f"[{host}]" if ":" in host else host
         print(f"scanlab live lab: http://{shown}:{server.port}/  (Ctrl-C stops it)", flush=True)
         if host not in ("127.0.0.1", "localhost", "::1"):
             print(f"listening on {host}: anyone who can reach this machine can use the lab", flush=True)

@@ -12,7 +12,7 @@ import shlex
 import sys
 from pathlib import Path
 
-from lab.app.option_types import number, whole
+from lab.app.option_types import seconds, whole
 from lab.app.sweep.light_sets import LIGHT_SETS
 from lab.app.sweep.settings import GRID_KEYS
 
@@ -71,7 +71,7 @@ def add_parser(sub, usage_error: type[Exception]) -> argparse.ArgumentParser:
                    help="a running Dask scheduler, e.g. tcp://host:8786 (default: start a local cluster)")
     p.add_argument("--workers", type=whole(1), metavar="N",
                    help=f"worker processes of the local cluster (default: the number of cores, {os.cpu_count()})")
-    p.add_argument("--timeout", type=number(0.0, above=True, what="seconds", unit=" seconds"), default=120.0, metavar="S",
+    p.add_argument("--timeout", type=seconds, default=120.0, metavar="S",
                    help="time limit of one case in seconds (default 120); its process is then killed")
     p.add_argument("--memory-limit", type=_bytes, default=8 << 30, metavar="SIZE",
                    help="address-space limit of a case's process, e.g. 8G (default) or none")

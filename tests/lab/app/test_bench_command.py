@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 
@@ -44,3 +45,15 @@ def test_markers_are_added_to_a_page_without_them(tmp_path):
     page.write_text("text")
     write_between_markers(page, "T")
     assert page.read_text() == f"text\n{START}\nT\n{END}\n"
+
+
+def test_a_public_mesh_that_cannot_be_read_is_a_row_that_says_so_even_with_contention(tmp_path):
+    """No network, or a broken copy: the run goes on with the other scenes, in every loop."""
+    (tmp_path / "igea.ply").write_text("not a ply\n")
+    done = subprocess.run([sys.executable, "-m", "lab", "bench", "igea-270k", "icosphere:level=1", "--size", "64x48",
+                           "--repeat", "2", "--memory", "none", "--no-startup", "--contention"],
+                          capture_output=True, text=True, timeout=600,
+                          env={**os.environ, "SCANLAB_BENCH_MESHES": str(tmp_path)})
+    assert done.returncode == 0 and "Traceback" not in done.stderr, done.stderr
+    assert "igea-270k 64x48: unavailable: the public mesh is not the binary PLY expected" in done.stdout + done.stderr
+    assert "other core busy, icosphere:level=1 64x48" in done.stdout + done.stderr

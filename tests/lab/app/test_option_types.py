@@ -6,7 +6,7 @@ import argparse
 
 import pytest
 
-from lab.app.option_types import image_size, number, whole
+from lab.app.option_types import image_size, number, seconds, whole
 
 
 def test_whole_numbers_within_their_bounds_are_read():
@@ -38,3 +38,13 @@ def test_a_bad_value_gives_one_reason(kind, text, reason):
 def test_numbers_and_sizes_are_read():
     assert number(0.0)("0") == 0.0 and number(0.0, above=True)("0.25") == 0.25
     assert image_size("512X384") == (512, 384)
+
+
+@pytest.mark.parametrize("text,reason", [("0", "must be more than 0 seconds, got '0'"),
+                                         ("1e300", "must be at most 1e+06 seconds, got '1e300'"),
+                                         ("soon", "expected seconds, got 'soon'")])
+def test_a_time_limit_is_more_than_0_and_at_most_a_million_seconds(text, reason):
+    assert seconds("2.5") == 2.5
+    with pytest.raises(argparse.ArgumentTypeError) as caught:
+        seconds(text)
+    assert str(caught.value) == reason
