@@ -144,7 +144,8 @@ class Comparison:
 
 
 def run_comparison(scene, name: str | None = None, reference: str | None = None, bars: dict | None = None,
-                   stages: bool = False, timings: bool = True, ours: tuple | None = None) -> Comparison:
+                   stages: bool = False, timings: bool = True, ours: tuple | None = None,
+                   meant: str | None = None) -> Comparison:
     """Draw ``scene`` both ways, measure and judge it (nothing is written).
 
     Parameters
@@ -160,6 +161,8 @@ def run_comparison(scene, name: str | None = None, reference: str | None = None,
     ours : (scene, :class:`renderer.RenderOptions`) for our renderer instead of (``scene``,
         the default options): a "break it" entry (:mod:`renderer.breakages`) breaks our side
         only, while VTK draws ``scene`` intact.
+    meant : why our side is made to fail on purpose (e.g. the rule ``ours`` breaks), judged
+        as :func:`compare.verdict.meant_to_fail` is for the scene; None: only that.
     """
     from compare.reference import render_reference
     from renderer import RenderOptions, render, render_stages
@@ -182,7 +185,7 @@ def run_comparison(scene, name: str | None = None, reference: str | None = None,
                "reference_ms": round(clock["reference_ms"], 3) if "reference_ms" in clock else None,
                "model": model_label(scene), "reference": ref_name}
     metrics["worst_pixel"] = worst_pixel(ours, ref, de)
-    verdict = judge(metrics, bars, meant_to_fail(scene))
+    verdict = judge(metrics, bars, meant or meant_to_fail(scene))
     metrics["verdict"] = verdict.to_json()
     return Comparison(scene=scene, name=metrics["scene"], ours_frame=ours, reference_frame=ref, delta_e=de,
                       metrics=metrics, verdict=verdict, stages=kept, settings=settings_line(scene, ref_name))

@@ -86,3 +86,17 @@ def test_our_side_can_be_drawn_broken_while_vtk_draws_the_scene_intact():
     np.testing.assert_array_equal(broken.reference, intact.reference)
     assert not np.array_equal(broken.ours, intact.ours)
     assert broken.metrics["delta_e_2000"]["mean"] > intact.metrics["delta_e_2000"]["mean"]
+
+
+
+def test_a_side_broken_on_purpose_is_judged_as_meant_to_fail():
+    from renderer import RenderOptions
+    from renderer.breakages import apply_breakage
+
+    scene = load_scene("course-phong")
+    scene = dataclasses.replace(scene, image=dataclasses.replace(scene.image, size=(160, 120)))
+    broken = run_comparison(scene, timings=False, ours=apply_breakage("face-normals", scene, RenderOptions()),
+                            meant="face normals on purpose")
+    assert broken.verdict.status == "fails as meant" and broken.metrics["verdict"]["status"] == "fails as meant"
+    assert broken.metrics["verdict"]["meant_to_fail"] == "face normals on purpose"
+    assert run_comparison(scene, timings=False, meant="nothing broken").verdict.status == "PASSES?"

@@ -106,6 +106,8 @@ class Catalogue:
             raise SceneError(f"{str(key)[:80]!r} is not a scene of this lab")
         if entry.shape is None:
             return entry.path
+        if params is not None and not isinstance(params, dict):
+            raise SceneError(f"{entry.shape}: expected its parameters by name, got {str(params)[:40]!r}")
         words = []
         for name, value in (params or {}).items():
             text = str(value).strip()

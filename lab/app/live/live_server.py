@@ -104,7 +104,8 @@ class LiveLab:
         start from it (a shape's new parameters keep the controls but the camera)."""
         key, params = controls.source, controls.shape_params
         if key != self.loaded[0]:
-            shape = self.catalogue.entries[key].shape if key in self.catalogue.entries else None
+            entry = self.catalogue.entries.get(key) if isinstance(key, str) else None
+            shape = entry.shape if entry else None
             params = shape_defaults(shape) if shape else {}
         try:
             base = self.catalogue.load(key, params)

@@ -109,11 +109,13 @@ class Worker:
         child.close()
 
     def stop(self, wait: float = 2.0) -> None:
-        """End the process (the pipe closed first, so an idle worker returns by itself)."""
+        """End the process (the pipe closed first, so an idle worker returns by itself),
+        waiting at most about ``wait`` seconds for each step; ``wait=0`` only signals it (the
+        server's event loop must not block: multiprocessing reaps it later)."""
         if self.process is None:
             return
         self.conn.close()
-        self.process.join(0.2)
+        self.process.join(min(0.2, wait))
         if self.process.is_alive():
             self.process.terminate()
             self.process.join(wait)
@@ -209,7 +211,7 @@ class Lane:
         runs when it is warm."""
         if self.loop is not None and self.worker.conn is not None:
             self.loop.remove_reader(self.worker.conn.fileno())
-        self.worker.stop()
+        self.worker.stop(wait=0.0)  # on the event loop: signal it, never wait for it
         self.running, self.ready = None, False
         self.worker.start()
         if self.loop is not None:

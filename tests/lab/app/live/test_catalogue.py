@@ -37,6 +37,9 @@ def test_a_shape_is_loaded_with_its_parameters_checked_by_the_loader(catalogue):
     for bad in [{"level": "1,radius=9"}, {"level": "__import__"}, {"level=1,x": 1}, {"level": ""}]:
         with pytest.raises(SceneError, match="expected a number"):
             catalogue.spec("shape:icosphere", bad)
+    for bad in [["level", 1], "level=1", 3]:
+        with pytest.raises(SceneError, match="expected its parameters by name"):
+            catalogue.spec("shape:icosphere", bad)
 
 
 def test_files_named_on_the_command_line_are_offered_and_checked(tmp_path):
