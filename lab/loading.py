@@ -18,8 +18,8 @@ import numpy as np
 from lab import shapes
 from lab.mesh import Mesh
 from lab.presets import preset_names, preset_path
-from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, TRANSPARENCIES, Camera, Image,
-                       Light, Material, RenderSettings, Scene, SceneObject, headlight)
+from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, LIGHT_RANGES, MATERIAL_RANGES, MODELS, SHADINGS,
+                       TRANSPARENCIES, Camera, Image, Light, Material, RenderSettings, Scene, SceneObject, headlight)
 from lab.framing import make_shape, mesh_file_scene, shape_scene
 from lab.matrices import model_matrix
 from lab.suggest import did_you_mean
@@ -91,9 +91,9 @@ def _light(src, i, table) -> Light:
                  ambient_color=s.colour("ambient_color", (0.0, 0.0, 0.0)),
                  diffuse_color=s.colour("diffuse_color", None), specular_color=s.colour("specular_color", None),
                  color=s.colour("color", (1.0, 1.0, 1.0)),
-                 intensity=s.number("intensity", 1.0, 0.0, 1e3),
+                 intensity=s.number("intensity", 1.0, *LIGHT_RANGES["intensity"]),
                  cone_angle=s.number("cone_angle", 90.0, 0.0, 180.0, lo_open=True),
-                 exponent=s.number("exponent", 1.0, 0.0, 128.0),
+                 exponent=s.number("exponent", 1.0, *LIGHT_RANGES["exponent"]),
                  attenuation=att, on=s.flag("on", True))
 
 
@@ -114,6 +114,9 @@ def _light_position(s: Table, table: dict):
         s.flag("positional", False)
 
 
+MATERIAL_DEFAULTS = {"ambient": 0.0, "diffuse": 1.0, "specular": 0.0, "specular_power": 1.0, "opacity": 1.0,
+                     "shininess": 0.0}
+"""A material's numbers when an object does not give them (ranges: lab.scene.MATERIAL_RANGES)."""
 OBJECT_KEYS = {"mesh", "shape", "params", "color", "ambient", "diffuse", "specular", "specular_power",
                "specular_color", "opacity", "shading", "scale", "rotate", "translate", "lighting", "name",
                "model", "ambient_color", "diffuse_color", "shininess", "normals", "crease_angle", "csg",
@@ -137,13 +140,10 @@ def _object(src, base: Path | None, i, table, inputs: list) -> SceneObject:
             raise s.error("params", f"expected a table like {{ level = 3 }}, got {show(params)}")
         mesh = make_shape(table["shape"], params, where=lambda m: s.error("shape", m))
         name = str(table["shape"])
-    mat = Material(color=s.colour("color", (1.0, 1.0, 1.0)), ambient=s.number("ambient", 0.0, 0.0, 1.0),
-                   diffuse=s.number("diffuse", 1.0, 0.0, 1.0), specular=s.number("specular", 0.0, 0.0, 1.0),
-                   specular_power=s.number("specular_power", 1.0, 0.0, 1000.0),
-                   specular_color=s.colour("specular_color", None), opacity=s.number("opacity", 1.0, 0.0, 1.0),
+    number = {k: s.number(k, default, *MATERIAL_RANGES[k]) for k, default in MATERIAL_DEFAULTS.items()}
+    mat = Material(color=s.colour("color", (1.0, 1.0, 1.0)), **number, specular_color=s.colour("specular_color", None),
                    lighting=s.flag("lighting", True), model=s.choice("model", "vtk", MODELS),
-                   ambient_color=s.colour("ambient_color", None), diffuse_color=s.colour("diffuse_color", None),
-                   shininess=s.number("shininess", 0.0, 0.0, 128.0))
+                   ambient_color=s.colour("ambient_color", None), diffuse_color=s.colour("diffuse_color", None))
     mesh = _normals(s, mesh, table)
     texture = _texture(s, base, mesh, table, inputs)
     if "matrix" in table:

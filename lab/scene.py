@@ -23,6 +23,11 @@ LIGHT_KINDS = ("scene", "camera", "headlight", "eye")
 INTERPOLATIONS = ("perspective", "screen")
 HIDDEN_SURFACES = ("zbuffer", "painter", "none")
 TRANSPARENCIES = ("oit", "depth_peeling", "sorted")
+MATERIAL_RANGES = {"ambient": (0.0, 1.0), "diffuse": (0.0, 1.0), "specular": (0.0, 1.0),
+                   "specular_power": (0.0, 1000.0), "shininess": (0.0, 128.0), "opacity": (0.0, 1.0)}
+"""A material's numbers and their closed ranges (the loader checks them, the live lab's fields too)."""
+LIGHT_RANGES = {"intensity": (0.0, 1000.0), "exponent": (0.0, 128.0)}
+"""A light's numbers with closed ranges; ``cone_angle`` is in (0, 180]."""
 
 Vec3 = tuple[float, float, float]
 

@@ -25,8 +25,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, MODELS, SHADINGS, TRANSPARENCIES, Camera, Light,
-                       Scene)
+from lab.scene import (HIDDEN_SURFACES, INTERPOLATIONS, LIGHT_KINDS, LIGHT_RANGES, MATERIAL_RANGES, MODELS, SHADINGS,
+                       TRANSPARENCIES, Camera, Light, Scene)
 from lab.values import MAX_MAGNITUDE
 from renderer.breakages import BREAKAGES, apply_breakage
 from renderer.pipeline import RenderOptions
@@ -40,11 +40,6 @@ NO_BREAKAGE = "none"
 """No rule broken."""
 MAX_LIGHTS = 8
 
-MATERIAL_RANGES = {"ambient": (0.0, 1.0), "diffuse": (0.0, 1.0), "specular": (0.0, 1.0),
-                   "specular_power": (0.0, 1000.0), "shininess": (0.0, 128.0), "opacity": (0.0, 1.0)}
-"""The material's numbers and their closed ranges, as the scene loader checks them."""
-LIGHT_RANGES = {"intensity": (0.0, 1000.0), "exponent": (0.0, 128.0)}
-"""The light's numbers with closed ranges; ``cone_angle`` is in (0, 180]."""
 
 
 class Problem(NamedTuple):

@@ -123,3 +123,28 @@ def test_every_breakage_is_offered():
     scene = load_scene("fill-rule")
     for name in BREAKAGES:
         assert to_render(replace(controls_for(scene, "k"), breakage=name), scene).breakage == name
+
+
+def test_past_the_shared_ranges_the_loader_and_the_controls_both_refuse(tmp_path):
+    """One table (lab.scene.MATERIAL_RANGES, LIGHT_RANGES) for the loader and the page."""
+    from lab.scene import LIGHT_RANGES
+    from lab.validation import SceneError
+
+    scene = load_scene("spot-attenuation")
+    c = controls_for(scene, "k")
+    for section, ranges in (("object", MATERIAL_RANGES), ("light", LIGHT_RANGES)):
+        for key, (lo, hi) in ranges.items():
+            past = hi + 0.5
+            text = ("[camera]\nposition = [3.0, 2.0, 4.0]\n[[light]]\nposition = [5.0, 5.0, 0.0]\n"
+                    '[[object]]\nshape = "cube"\n')
+            text += f"{key} = {past}\n" if section == "object" else ""
+            text = text.replace("[[light]]\n", f"[[light]]\n{key} = {past}\n") if section == "light" else text
+            (tmp_path / "s.toml").write_text(text)
+            with pytest.raises(SceneError, match=f"{key}: {past:g} is outside"):
+                load_scene(str(tmp_path / "s.toml"))
+            if section == "object":
+                bad = replace(c, materials=[{**m, key: past} for m in c.materials])
+            else:
+                bad = replace(c, lights=[{**li, key: past} for li in c.lights])
+            with pytest.raises(Problems):
+                to_render(bad, scene)
