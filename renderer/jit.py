@@ -150,6 +150,7 @@ class SourceTreeLocator(_CacheLocator):
     """
 
     def __init__(self, py_func, py_file):
+        self._py_file = py_file  # numba's warning about a kernel it cannot cache names this file
         self._path = str(_folder())
         self._stamp = _folder().name
         self._disambiguator = str(py_func.__code__.co_firstlineno)

@@ -186,3 +186,20 @@ def test_the_field_write_check_sees_one():
     code = ("@njit(cache=True)\ndef k(buf, out):\n    buf.depth[0, 1] = 1.0\n    out[0] = buf.depth[0, 0]\n"
             "    a.b[0], c[1] = 1, 2\n")
     assert writes_through_fields(next(kernels(ast.parse(code)))) == ["k:3", "k:5"]
+
+
+def test_a_kernel_numba_cannot_cache_gets_numbas_warning_not_a_crash():
+    """numba names the kernel's file in its warning (``locator._py_file``); a kernel calling
+    ``numba.get_num_threads()`` is one it refuses to cache."""
+    import warnings
+
+    import numba
+
+    source = "def threads():\n    return numba.get_num_threads()\n"
+    namespace = {"numba": numba}
+    exec(compile(source, str(jit.SOURCE_DIR / "shading.py"), "exec"), namespace)  # as if written in the tree
+    kernel = jit.njit(cache=True)(namespace["threads"])
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assert kernel() >= 1
+    assert any("Cannot cache" in str(w.message) for w in caught)
