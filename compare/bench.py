@@ -108,7 +108,8 @@ def thread_contention(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
             ratios.append(pair[2] / pair[1])
     finally:
         numba.set_num_threads(saved)
-    return {"one_thread": _summary(one), "two_threads": _summary(two), "ratio": statistics.median(ratios)}
+    return {"one_thread": _summary(one), "two_threads": _summary(two), "ratio": statistics.median(ratios),
+            "layer": numba.threading_layer()}
 
 
 class busy_core:

@@ -21,8 +21,8 @@ install); else the user's cache folder, ``$XDG_CACHE_HOME/scanlab/kernels`` (by 
 ``~/.cache/scanlab/kernels``) — a read-only tree or a package installed where the user
 cannot write.
 
-Threads: importing this module sets ``OMP_WAIT_POLICY=passive`` (unless already set) before
-numba's OpenMP threading layer starts, so idle worker threads sleep rather than spin.
+Threads: importing this module chooses numba's threading layer before numba starts
+(:mod:`renderer.threads`: TBB when it loads, else OpenMP with ``OMP_WAIT_POLICY=passive``).
 
 Every kernel module imports ``njit`` from here, not from numba, so no renderer kernel can
 be cached without this locator being in place (``tests/renderer/test_jit.py`` checks).
@@ -36,15 +36,17 @@ import os
 import shutil
 from pathlib import Path
 
-# Idle OpenMP threads sleep instead of spinning between parallel loops: with the other core
-# busy (another process, or VTK's llvmpipe in a benchmark), spinning threads took ico5 at
-# 512² from 46 ms to 132 ms. Set before numba starts its threading layer (the first parallel
-# kernel), so the package decides, not the user's shell; a value the user set is kept.
-os.environ.setdefault("OMP_WAIT_POLICY", "passive")
+from renderer.threads import choose_threading_layer
 
-import numba  # noqa: E402  (after the wait policy)
+# Before numba starts: TBB's work-taking threads, else OpenMP's with passive waiting
+# (renderer/threads.py); the package decides, not the user's shell.
+LAYER = choose_threading_layer()
+
+import numba  # noqa: E402  (after the threading layer is chosen)
 from numba import prange  # noqa: E402
 from numba.core.caching import CacheImpl, _CacheLocator  # noqa: E402
+
+numba.config.THREADING_LAYER = LAYER  # also when something imported numba before us
 
 __all__ = ["njit", "prange", "SOURCE_DIR", "source_hash", "cache_root", "cache_folder", "KEEP"]
 

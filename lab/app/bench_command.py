@@ -105,7 +105,7 @@ def report(run: dict) -> str:
                      f"{s['cold']:.1f} s, warm {s['warm']:.1f} s.")
     if run.get("contention"):
         lines.append("With another process spinning on one core, our frame time with 2 threads / 1 thread "
-                     "(median of alternating pairs): " + ", ".join(
+                     f"(numba's {run['contention'][0]['layer']} layer; median of alternating pairs): " + ", ".join(
                          f"{c['scene']} {c['size']} {c['ratio']:.2f}" for c in run["contention"]) + ".")
     memory = [r for r in run["rows"] if "memory" in r]
     for r in memory:

@@ -38,4 +38,4 @@ def test_one_thread_and_two_are_timed_in_pairs_while_a_core_is_busy():
     assert busy.child.poll() is not None  # the spinning child is gone
     for side in ("one_thread", "two_threads"):
         assert 0 < r[side]["min"] <= r[side]["median"] <= r[side]["max"]
-    assert r["ratio"] > 0
+    assert r["ratio"] > 0 and r["layer"] == "tbb"
