@@ -48,6 +48,25 @@ def _summary(times: list[float]) -> dict:
     return {"median": statistics.median(times), "min": min(times), "max": max(times)}
 
 
+def alternate(first, second, repeat: int, warm_up: int) -> tuple[list[float], list[float], list[float]]:
+    """Times (ms) of two frame functions called in pairs, ``first`` first in even pairs and
+    ``second`` first in odd ones, after ``warm_up`` untimed pairs; returns both lists of times
+    and the per-pair ratios first/second."""
+    for _ in range(warm_up):
+        first()
+        second()
+    times: tuple[list[float], list[float]] = ([], [])
+    for i in range(repeat):
+        pair = [0.0, 0.0]
+        for k in ((0, 1) if i % 2 == 0 else (1, 0)):
+            t0 = time.perf_counter()
+            (first, second)[k]()
+            pair[k] = (time.perf_counter() - t0) * 1e3
+        times[0].append(pair[0])
+        times[1].append(pair[1])
+    return times[0], times[1], [a / b for a, b in zip(*times)]
+
+
 def time_frames(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
     """Frame times (ms) of both renderers on ``scene``, alternating in pairs; see the module
     docstring. Returns ``{"ours": {median, min, max}, "reference": {...}, "ratio": median of ours/VTK}``."""
@@ -59,53 +78,30 @@ def time_frames(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
         pl.ren_win.Render()
         read_frame(pl)
 
-    def ours_frame():
-        render(scene)
-
     try:
-        for _ in range(warm_up):
-            ours_frame()
-            vtk_frame()
-        ours, vtk, ratios = [], [], []
-        for i in range(repeat):
-            pair = {}
-            for name, frame in ((("ours", ours_frame), ("reference", vtk_frame)) if i % 2 == 0 else
-                                (("reference", vtk_frame), ("ours", ours_frame))):
-                t0 = time.perf_counter()
-                frame()
-                pair[name] = (time.perf_counter() - t0) * 1e3
-            ours.append(pair["ours"])
-            vtk.append(pair["reference"])
-            ratios.append(pair["ours"] / pair["reference"])
+        ours, vtk, ratios = alternate(lambda: render(scene), vtk_frame, repeat, warm_up)
     finally:
         pl.close()
     return {"ours": _summary(ours), "reference": _summary(vtk), "ratio": statistics.median(ratios)}
 
 
 def thread_contention(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
-    """Our frame time (ms) with one numba thread and with two, alternating in pairs (one
-    thread first in even pairs), and the median ratio two/one. Run it with
-    :func:`busy_core` holding a core to see contention."""
+    """Our frame time (ms) with one numba thread and with two, alternating in pairs (two
+    threads first in even pairs), the median ratio two/one, and numba's threading layer.
+    Run it with :func:`busy_core` holding a core to see contention."""
     import numba
 
     from renderer import render
 
-    saved = numba.get_num_threads()
-    one, two, ratios = [], [], []
-    try:
-        for threads in (1, 2) * warm_up:
-            numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+    def with_threads(n):
+        def frame():
+            numba.set_num_threads(min(n, numba.config.NUMBA_NUM_THREADS))
             render(scene)
-        for i in range(repeat):
-            pair = {}
-            for threads in ((1, 2) if i % 2 == 0 else (2, 1)):
-                numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
-                t0 = time.perf_counter()
-                render(scene)
-                pair[threads] = (time.perf_counter() - t0) * 1e3
-            one.append(pair[1])
-            two.append(pair[2])
-            ratios.append(pair[2] / pair[1])
+        return frame
+
+    saved = numba.get_num_threads()
+    try:
+        two, one, ratios = alternate(with_threads(2), with_threads(1), repeat, warm_up)
     finally:
         numba.set_num_threads(saved)
     return {"one_thread": _summary(one), "two_threads": _summary(two), "ratio": statistics.median(ratios),

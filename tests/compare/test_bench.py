@@ -3,7 +3,9 @@ from __future__ import annotations
 
 import os
 
-from compare.bench import busy_core, markdown_table, peak_memory, thread_contention, time_frames
+import pytest
+
+from compare.bench import alternate, busy_core, markdown_table, peak_memory, thread_contention, time_frames
 from compare.bench_scenes import bench_scene
 
 
@@ -39,3 +41,11 @@ def test_one_thread_and_two_are_timed_in_pairs_while_a_core_is_busy():
     for side in ("one_thread", "two_threads"):
         assert 0 < r[side]["min"] <= r[side]["median"] <= r[side]["max"]
     assert r["ratio"] > 0 and r["layer"] == "tbb"
+
+
+def test_pairs_alternate_which_frame_goes_first_after_the_warm_up():
+    calls = []
+    first, second, ratios = alternate(lambda: calls.append("a"), lambda: calls.append("b"), repeat=3, warm_up=1)
+    assert "".join(calls) == "ab" + "ab" + "ba" + "ab"
+    assert len(first) == len(second) == len(ratios) == 3
+    assert all(r == pytest.approx(a / b) for r, a, b in zip(ratios, first, second))
