@@ -27,9 +27,10 @@ import numpy as np
 import lab.atomic
 from lab.framing import default_camera
 from lab.loading import scene_from_dict
-from lab.mesh import Mesh
+from lab.mesh import Mesh, strip_triangles
 from lab.normals import angle_weighted_normals
 from lab.scene import Image, Light, Material, Scene, SceneObject
+from lab.shapes import split_in_four
 
 IGEA_URL = "https://raw.githubusercontent.com/alecjacobson/common-3d-test-models/master/data/igea.ply"
 """A public scanned model (134,345 vertices, one PLY ``tristrips`` element)."""
@@ -49,20 +50,15 @@ def mesh_cache() -> Path:
 
 
 def strips_to_triangles(strips: np.ndarray) -> np.ndarray:
-    """PLY triangle strips (vertex indices, −1 between strips) → (T, 3) triangles.
-
-    Triangle i of a strip is (s[i], s[i+1], s[i+2]), with the first two swapped for odd i
-    so that every triangle keeps the strip's winding; triangles with a repeated vertex
-    (the strips' joins) are dropped.
-    """
+    """PLY triangle strips (vertex indices, −1 between strips) → (T, 3) triangles, wound as
+    :func:`lab.mesh.strip_triangles` winds a strip (every triangle keeps the strip's winding);
+    triangles with a repeated vertex (the strips' joins) are dropped."""
     strips = np.asarray(strips, np.int64)
-    a, b, c = strips[:-2], strips[1:-1], strips[2:]
-    # position of each triangle within its own strip, for the winding flip
-    starts = np.flatnonzero(np.concatenate([[True], strips[:-1] < 0]))
-    pos = np.arange(len(strips)) - starts[np.searchsorted(starts, np.arange(len(strips)), side="right") - 1]
-    odd = (pos[:-2] % 2) == 1
-    tri = np.stack([np.where(odd, b, a), np.where(odd, a, b), c], axis=1)
-    keep = (a >= 0) & (b >= 0) & (c >= 0) & (a != b) & (b != c) & (a != c)
+    breaks = np.flatnonzero(strips < 0)
+    connectivity = strips[strips >= 0]
+    offsets = np.concatenate([[0], breaks - np.arange(len(breaks)), [len(connectivity)]])
+    tri = strip_triangles(offsets, connectivity)
+    keep = (tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 0] != tri[:, 2])
     return tri[keep]
 
 
@@ -107,18 +103,10 @@ def public_mesh() -> Mesh:
 
 
 def subdivide(mesh: Mesh) -> Mesh:
-    """Every triangle split into four at its edge midpoints (shared midpoints made once),
+    """Every triangle split into four at its edge midpoints (:func:`lab.shapes.split_in_four`),
     the points left where they are: 4× the triangles, the same surface."""
-    tri = mesh.triangles
-    edges = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
-    keys = np.sort(edges, axis=1)
-    unique, inverse = np.unique(keys, axis=0, return_inverse=True)
-    mid = mesh.n_points + inverse.reshape(3, -1)  # midpoint of edge 01, 12, 20 of every triangle
-    points = np.concatenate([mesh.points, (mesh.points[unique[:, 0]] + mesh.points[unique[:, 1]]) / 2.0])
-    a, b, c = tri[:, 0], tri[:, 1], tri[:, 2]
-    ab, bc, ca = mid
-    triangles = np.concatenate([np.stack(t, axis=1) for t in ((a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca))])
-    return Mesh(points, triangles)
+    mid, triangles = split_in_four(mesh.points, mesh.triangles)
+    return Mesh(np.concatenate([mesh.points, mid]), triangles)
 
 
 def _mesh_scene(mesh: Mesh, name: str, size) -> Scene:

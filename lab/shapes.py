@@ -78,6 +78,24 @@ def icosahedron(radius: float = 1.0) -> Mesh:
     return Mesh(pts, faces)
 
 
+def split_in_four(points: np.ndarray, triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """One subdivision step: each triangle (a, b, c) split into (a, ab, ca), (b, bc, ab),
+    (c, ca, bc), (ab, bc, ca) at its edge midpoints, a midpoint shared by the two triangles
+    of its edge. Returns the midpoints (E, 3), to be appended after ``points`` (their indices
+    follow them), and the 4·T new triangles, every one wound as its parent.
+
+    >>> mid, tris = split_in_four(np.eye(3), np.array([[0, 1, 2]]))
+    >>> len(mid), tris.tolist()[-1]
+    (3, [3, 5, 4])
+    """
+    edges = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
+    unique, inverse = np.unique(np.sort(edges, axis=1), axis=0, return_inverse=True)
+    mid = (points[unique[:, 0]] + points[unique[:, 1]]) / 2.0
+    ab, bc, ca = inverse.reshape(3, -1) + len(points)  # rows: ab, bc, ca per triangle
+    a, b, c = triangles.T
+    return mid, np.concatenate([np.stack(t, axis=1) for t in ((a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca))])
+
+
 def icosphere(level: int = 2, radius: float = 1.0, uv: int = 0) -> Mesh:
     """The textbook's subdivided icosahedron: 20·4^level faces on a sphere of ``radius``.
 
@@ -123,18 +141,8 @@ def icosphere(level: int = 2, radius: float = 1.0, uv: int = 0) -> Mesh:
     mesh = icosahedron(radius)
     pts, tris = mesh.points, mesh.triangles
     for _ in range(int(level)):
-        edges = np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]], tris[:, [2, 0]]])
-        keys = np.sort(edges, axis=1)
-        uniq, inverse = np.unique(keys, axis=0, return_inverse=True)
-        mid = (pts[uniq[:, 0]] + pts[uniq[:, 1]]) / 2.0
-        mid *= radius / np.linalg.norm(mid, axis=1, keepdims=True)
-        m = inverse.reshape(3, -1) + len(pts)  # rows: ab, bc, ca per triangle
-        ab, bc, ca = m
-        a, b, c = tris.T
-        tris = np.concatenate([
-            np.stack([a, ab, ca], axis=1), np.stack([b, bc, ab], axis=1),
-            np.stack([c, ca, bc], axis=1), np.stack([ab, bc, ca], axis=1),
-        ])
+        mid, tris = split_in_four(pts, tris)
+        mid *= radius / np.linalg.norm(mid, axis=1, keepdims=True)  # onto the sphere
         pts = np.concatenate([pts, mid])
     if not uv:
         return Mesh(pts, tris)

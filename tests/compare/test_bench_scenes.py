@@ -11,9 +11,9 @@ from lab.mesh import Mesh
 
 
 def test_a_strip_alternates_its_winding_and_restarts_after_minus_one():
-    # strip 0 1 2 3 then a new strip 4 5 6: (0,1,2), (2,1,3) keeps the winding, (4,5,6)
+    # strip 0 1 2 3 then a new strip 4 5 6: (0,1,2), (1,3,2) keeps the winding (VTK's order), (4,5,6)
     tri = strips_to_triangles([0, 1, 2, 3, -1, 4, 5, 6])
-    assert tri.tolist() == [[0, 1, 2], [2, 1, 3], [4, 5, 6]]
+    assert tri.tolist() == [[0, 1, 2], [1, 3, 2], [4, 5, 6]]
 
 
 def test_triangles_with_a_repeated_vertex_are_dropped():
@@ -58,7 +58,7 @@ def test_the_public_mesh_is_read_from_the_cache_and_converted_once(tmp_path, mon
     (tmp_path / "igea.ply").write_bytes(header + body)
     monkeypatch.setenv("SCANLAB_BENCH_MESHES", str(tmp_path))
     mesh = bench_scenes.public_mesh()
-    assert mesh.triangles.tolist() == [[0, 1, 2], [2, 1, 3]]
+    assert mesh.triangles.tolist() == [[0, 1, 2], [1, 3, 2]]
     assert (tmp_path / "igea-triangles.npz").exists()
     (tmp_path / "igea.ply").unlink()
-    assert bench_scenes.public_mesh().triangles.tolist() == [[0, 1, 2], [2, 1, 3]]
+    assert bench_scenes.public_mesh().triangles.tolist() == [[0, 1, 2], [1, 3, 2]]

@@ -275,3 +275,16 @@ def test_too_few_segments_is_an_error(shape):
     """Fewer than 3 segments raises ValueError."""
     with pytest.raises(ValueError, match="segments"):
         shape(segments=2)
+
+
+def test_a_split_in_four_shares_each_edge_midpoint_and_keeps_the_winding():
+    from lab.shapes import split_in_four
+
+    points = np.array([[0.0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]])
+    mid, tris = split_in_four(points, np.array([[0, 1, 2], [0, 2, 3]]))
+    assert len(mid) == 5 and len(tris) == 8  # the shared diagonal's midpoint made once
+    all_points = np.concatenate([points, mid])
+    p = all_points[tris]
+    normal_z = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])[:, 2]
+    assert (normal_z > 0).all()  # every child wound as its counter-clockwise parent
+    assert {tuple(m) for m in mid.tolist()} == {(0.5, 0, 0), (1, 0.5, 0), (0.5, 0.5, 0), (0.5, 1, 0), (0, 0.5, 0)}
