@@ -172,7 +172,8 @@ def clip_mesh(verts_clip, triangles, ws=None, trivial=True) -> Clipped:
     np.cumsum(counts[cut_ids], out=piece_offsets[1:])
     k, p = int(offsets[-1]), int(piece_offsets[-1])
     out = Clipped(source=empty(ws, "clip.source", k, np.int32), piece=empty(ws, "clip.piece", k, np.int32),
-                  piece_clip=empty(ws, "clip.piece_clip", (p, 3, 4)), piece_bary=empty(ws, "clip.piece_bary", (p, 3, 3)))
+                  piece_clip=empty(ws, "clip.piece_clip", (p, 3, 4)),
+                  piece_bary=empty(ws, "clip.piece_bary", (p, 3, 3)))
     write_whole(counts, cut, offsets, out.source, out.piece)
     write_pieces(verts_clip, triangles, cut_ids, offsets, piece_offsets, *out)
     return out
@@ -195,10 +196,10 @@ def count_pieces(verts_clip, triangles, codes, trivial, counts, cut):
             counts[t], cut[t] = max(n - 2, 0), n >= 3
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True)
 def write_whole(counts, cut, offsets, source, piece):
     """Second pass, triangles kept whole: their entry at ``offsets[t]`` names them, no piece."""
-    for t in prange(counts.shape[0]):
+    for t in range(counts.shape[0]):
         if counts[t] and not cut[t]:
             source[offsets[t]] = t
             piece[offsets[t]] = -1
@@ -224,23 +225,23 @@ def write_pieces(verts_clip, triangles, cut_ids, offsets, piece_offsets, source,
             p += 1
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True)
 def corner_rows(source, piece, triangles, n_vertices, rows):
     """The rows of each triangle's corners into ``rows`` (K, 3), in a table that holds the
     ``n_vertices`` source vertices first and then the pieces' corners, three per piece (as
     :func:`renderer.pipeline.clip_and_map` lays out the window-space table)."""
-    for k in prange(source.shape[0]):
+    for k in range(source.shape[0]):
         p = piece[k]
         for v in range(3):
             rows[k, v] = triangles[source[k], v] if p < 0 else n_vertices + 3 * p + v
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True)
 def gather_corners(verts_clip, triangles, source, piece, piece_clip, piece_bary, out_clip, out_bary):
     """Each triangle's clip-space corners and their weights, written out into ``out_clip``
     (K, 3, 4) and ``out_bary`` (K, 3, 3): a source triangle's vertices with unit weights, or
     its piece's rows."""
-    for k in prange(source.shape[0]):
+    for k in range(source.shape[0]):
         p = piece[k]
         for v in range(3):
             if p < 0:

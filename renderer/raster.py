@@ -176,16 +176,6 @@ def setup_triangles(corners, fixed, window, height, cull_back, front, ccw, rows,
             rows[k, 0], rows[k, 1] = 1, 0
 
 
-@njit(cache=True, parallel=True)
-def setup_for_shading(corners, fixed, window, front, plane):
-    """The part of :func:`setup_triangles` shading reads: ``front`` and ``plane``."""
-    for k in prange(corners.shape[0]):
-        i0, i1, i2 = corners[k, 0], corners[k, 1], corners[k, 2]
-        front[k] = ((fixed[i1, 0] - fixed[i0, 0]) * (fixed[i2, 1] - fixed[i0, 1])
-                    - (fixed[i2, 0] - fixed[i0, 0]) * (fixed[i1, 1] - fixed[i0, 1])) > 0
-        triangle_plane(window, i0, i1, i2, plane[k])
-
-
 @njit(cache=True, inline="always")
 def row_span(k, row, ccw, width, rule):
     """Columns [first, last] of triangle ``k`` on ``row``, clamped to the image (first > last: none)."""
@@ -294,7 +284,8 @@ def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray):
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
     if len(tri_fixed) != len(tri_window):
         raise ValueError("tri_fixed and tri_window must hold the same triangles")
-    return np.arange(3 * len(tri_fixed), dtype=np.int64).reshape(-1, 3), tri_fixed.reshape(-1, 2), tri_window.reshape(-1, 3)
+    corners = np.arange(3 * len(tri_fixed), dtype=np.int64).reshape(-1, 3)
+    return corners, tri_fixed.reshape(-1, 2), tri_window.reshape(-1, 3)
 
 
 def set_up_corners(corners: np.ndarray, fixed: np.ndarray, window: np.ndarray, height: int, cull_back: bool, ws=None,

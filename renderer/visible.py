@@ -11,29 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from renderer.jit import njit, prange
 from renderer.raster import EMPTY
 from renderer.workspace import empty
-
-
-@njit(cache=True, parallel=True)
-def mark_winners(tri_index, won):
-    """``won[k] = 1`` for every triangle ``k`` some pixel of ``tri_index`` (H, W) shows."""
-    for row in prange(tri_index.shape[0]):
-        for col in range(tri_index.shape[1]):
-            k = tri_index[row, col]
-            if k != EMPTY:
-                won[k] = 1
-
-
-@njit(cache=True, parallel=True)
-def renumber(tri_index, new_number):
-    """``tri_index[p] = new_number[tri_index[p]]`` for every covered pixel, in place."""
-    for row in prange(tri_index.shape[0]):
-        for col in range(tri_index.shape[1]):
-            k = tri_index[row, col]
-            if k != EMPTY:
-                tri_index[row, col] = new_number[k]
 
 
 def visible_triangles(tri_index: np.ndarray, count: int, ws=None) -> np.ndarray:
@@ -45,10 +24,12 @@ def visible_triangles(tri_index: np.ndarray, count: int, ws=None) -> np.ndarray:
     >>> visible_triangles(tri_index, 9).tolist(), tri_index.tolist()
     ([2, 7], [[1, -1], [0, 1]])
     """
-    won = empty(ws, "scratch.per_triangle", count, np.int64)  # shared with the clipper's offsets
-    won[:] = 0
-    mark_winners(tri_index, won)
-    ids = np.flatnonzero(won)
-    won[ids] = np.arange(len(ids))
-    renumber(tri_index, won)
+    covered = tri_index != EMPTY
+    shown = tri_index[covered]
+    number = empty(ws, "scratch.per_triangle", count, np.int64)  # shared with the clipper's offsets
+    number[:] = 0
+    number[shown] = 1
+    ids = np.flatnonzero(number)
+    number[ids] = np.arange(len(ids))
+    tri_index[covered] = number[shown]
     return ids

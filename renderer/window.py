@@ -20,7 +20,7 @@ SUBPIXEL_BITS = 8
 SUBPIXEL = 1 << SUBPIXEL_BITS  # 256 steps per pixel
 
 
-def clip_to_window(tri_clip, width, height, ws=None, name="window"):
+def clip_to_window(tri_clip, width, height, ws=None, name="window.mapped"):
     """Clip-space points (..., 4) → window space: (K, 3, 4) triangles, or (M, 4) vertices.
 
     Returns ``window`` (..., 3) float (x, y up, z in 0..1) and ``fixed`` (..., 2) int64,
