@@ -28,7 +28,7 @@ from renderer.clip import Clipped, clip_mesh, clipped_corners, corner_rows
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
-from renderer.raster import BATCH, depth_to_window, rasterize_visibility, setup_triangles
+from renderer.raster import BATCH, IndexedTriangles, depth_to_window, rasterize_visibility, setup_triangles
 from renderer.reflection.registry import material_table
 from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
 from renderer.texture_sampling import texture_table
@@ -139,6 +139,10 @@ class ClippedMesh:
         rows = empty(ws, name, (len(source), 3), np.int64)
         corner_rows(source, piece, self.geometry.triangles, len(self.geometry.verts_clip), rows)
         return rows
+
+    def indexed(self, ws=None, name="clipped.rows") -> IndexedTriangles:
+        """The triangles as the raster takes them (:class:`renderer.raster.IndexedTriangles`)."""
+        return IndexedTriangles(lambda a, b: self.corner_rows(a, b, ws, name), self.count, self.fixed, self.window)
 
     def corners_written_out(self, ws=None, name="clipped"):
         """``(tri_clip, clip_bary, clip_source)`` as :class:`ClippedTriangles` holds them."""
@@ -298,8 +302,7 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     translucent = (materials.opacity[geo.tri_object[clipped.clip_source]] < 1.0 if (materials.opacity < 1.0).any()
                    else np.zeros(clipped.count, np.bool_))
     opaque = clipped.take(~translucent) if translucent.any() else clipped
-    vis = rasterize_visibility(lambda a, b: opaque.corner_rows(a, b, ws, "raster.corners"), opaque.count,
-                               opaque.fixed, opaque.window, width, height, rules.fill_rule, ws=ws,
+    vis = rasterize_visibility(opaque.indexed(ws, "raster.corners"), width, height, rules.fill_rule, ws=ws,
                                depth_test=rules.depth_test, cull_back=rules.cull_back, batch=BATCH if lean else None)
     won = opaque.take(visible_triangles(vis.tri_index, opaque.count, ws)) if lean else opaque  # as vis.tri_index counts
 

@@ -29,7 +29,7 @@ triangle order (see :func:`rasterize`), and gives the same bytes as one thread.
 """
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Callable, NamedTuple
 
 import numpy as np
 from renderer.jit import njit, prange
@@ -277,15 +277,27 @@ BATCH = 1 << 15
 however many triangles the scene has."""
 
 
-def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray):
-    """Per-triangle tables (K, 3, 2) and (K, 3, 3) as vertex tables and corner rows: ``(corners
-    (K, 3), fixed (3K, 2), window (3K, 3))``, triangle k's corners on rows 3k, 3k + 1, 3k + 2."""
+class IndexedTriangles(NamedTuple):
+    """Triangles as rows of vertex tables: ``corners(a, b)`` gives the corner rows (b − a, 3)
+    of triangles a … b − 1 (of ``count``) in ``fixed`` (M, 2) int64, x and y on the
+    1/256-pixel grid, and ``window`` (M, 3), window space (:mod:`renderer.window`)."""
+
+    corners: Callable[[int, int], np.ndarray]
+    count: int
+    fixed: np.ndarray
+    window: np.ndarray
+
+
+def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray) -> IndexedTriangles:
+    """Per-triangle tables (K, 3, 2) and (K, 3, 3) as :class:`IndexedTriangles`: triangle k's
+    corners on rows 3k, 3k + 1, 3k + 2 of their vertex tables (3K, 2) and (3K, 3)."""
     tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
     if len(tri_fixed) != len(tri_window):
         raise ValueError("tri_fixed and tri_window must hold the same triangles")
     corners = np.arange(3 * len(tri_fixed), dtype=np.int64).reshape(-1, 3)
-    return corners, tri_fixed.reshape(-1, 2), tri_window.reshape(-1, 3)
+    return IndexedTriangles(lambda a, b: corners[a:b], len(corners), tri_fixed.reshape(-1, 2),
+                            tri_window.reshape(-1, 3))
 
 
 def set_up_corners(corners: np.ndarray, fixed: np.ndarray, window: np.ndarray, height: int, cull_back: bool, ws=None,
@@ -304,7 +316,8 @@ def set_up_corners(corners: np.ndarray, fixed: np.ndarray, window: np.ndarray, h
 def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back: bool, ws=None,
            name="raster") -> TriangleSetup:
     """:func:`set_up_corners` of triangles given whole: (K, 3, 2) fixed and (K, 3, 3) window corners."""
-    return set_up_corners(*whole_triangles(tri_fixed, tri_window), height, cull_back, ws, name)
+    whole = whole_triangles(tri_fixed, tri_window)
+    return set_up_corners(whole.corners(0, whole.count), whole.fixed, whole.window, height, cull_back, ws, name)
 
 
 class Visibility(NamedTuple):
@@ -321,26 +334,25 @@ def depth_to_window(depth: np.ndarray) -> np.ndarray:
     return depth / DEPTH_MAX
 
 
-def rasterize_visibility(corners, count: int, fixed: np.ndarray, window: np.ndarray, width: int, height: int,
-                         fill_rule: str = "top-left", n_bands: int | None = None, ws=None,
-                         depth_test: bool = True, cull_back: bool = False, batch: int | None = BATCH) -> Visibility:
+def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, fill_rule: str = "top-left",
+                         n_bands: int | None = None, ws=None, depth_test: bool = True, cull_back: bool = False,
+                         batch: int | None = BATCH) -> Visibility:
     """Set up the triangles and fill the visibility buffer (the Python wrapper the pipeline calls).
 
-    The ``count`` triangles are drawn in order, ``batch`` at a time (None: all at once): ``corners(a, b)``
-    gives the corner rows (b − a, 3) of triangles a … b − 1 in the vertex tables ``fixed``
-    (M, 2) int64 and ``window`` (M, 3); each batch is set up (:func:`setup_triangles`) and
-    filled (:func:`rasterize`) over what the batches before it left, so the buffer is the
-    one a single pass over all of them fills. With a workspace ``ws`` every array lives in
-    it. ``n_bands`` defaults to two per thread (:func:`renderer.bands.raster_bands`);
+    The triangles (:class:`IndexedTriangles`) are drawn in order, ``batch`` at a time (None:
+    all at once): each batch is set up (:func:`setup_triangles`) and filled
+    (:func:`rasterize`) over what the batches before it left, so the buffer is the one a
+    single pass over all of them fills. With a workspace ``ws`` every array lives in it.
+    ``n_bands`` defaults to two per thread (:func:`renderer.bands.raster_bands`);
     ``depth_test=False`` turns the z-buffer test off; ``cull_back=True`` drops back-facing triangles.
     """
     depth = empty(ws, "raster.depth", (height, width), np.int32)
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)
-    bands, rule = raster_bands(height, n_bands), FILL_RULES[fill_rule]
+    bands, rule, count = raster_bands(height, n_bands), FILL_RULES[fill_rule], triangles.count
     step = max(count, 1) if batch is None else int(batch)
     for a in range(0, max(count, 1), step):
-        rows = np.ascontiguousarray(corners(a, min(a + step, count)), dtype=np.int64)
-        setup = set_up_corners(rows, fixed, window, height, cull_back, ws, "raster")
+        rows = np.ascontiguousarray(triangles.corners(a, min(a + step, count)), dtype=np.int64)
+        setup = set_up_corners(rows, triangles.fixed, triangles.window, height, cull_back, ws, "raster")
         rasterize(setup, bands, rule, bool(depth_test), a, a == 0, depth, tri_index)
     return Visibility(depth, tri_index)
 
@@ -355,10 +367,9 @@ def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: in
     ``bary`` (H, W, 2) the screen-space weights of each visible triangle's vertices 1 and 2
     (undefined where empty), all in window rows (y up), and ``front`` (K,) per triangle.
     """
-    corners, fixed, window = whole_triangles(tri_fixed, tri_window)
-    vis = rasterize_visibility(lambda a, b: corners[a:b], len(corners), fixed, window, width, height, fill_rule,
-                               n_bands, ws, depth_test, cull_back)
-    setup = set_up_corners(corners, fixed, window, height, cull_back)
+    whole = whole_triangles(tri_fixed, tri_window)
+    vis = rasterize_visibility(whole, width, height, fill_rule, n_bands, ws, depth_test, cull_back)
+    setup = set_up_corners(whole.corners(0, whole.count), whole.fixed, whole.window, height, cull_back)
     bary = np.zeros((height, width, 2))
     weights_of_visible(setup.plane, vis.tri_index, bary)
     return depth_to_window(vis.depth), vis.tri_index, bary, setup.front

@@ -377,11 +377,8 @@ def test_drawing_in_batches_fills_the_buffer_one_pass_fills(batch, depth_test):
     fixed = rng.integers(-3 * SUBPIXEL, 40 * SUBPIXEL, (80, 3, 2))
     z = np.where(rng.random((80, 1)) < 0.5, rng.choice([0.25, 0.5], (80, 1)), rng.uniform(0, 1, (80, 3)))
     window = np.concatenate([fixed / SUBPIXEL + 0.5, z[..., None] * np.ones((80, 3, 1))], axis=2)
-    corners, fixed_rows, window_rows = whole_triangles(fixed, window)
-    one_pass = rasterize_visibility(lambda a, b: corners[a:b], 80, fixed_rows, window_rows, width, height,
-                                    depth_test=depth_test, batch=None)
-    batches = rasterize_visibility(lambda a, b: corners[a:b], 80, fixed_rows, window_rows, width, height,
-                                   depth_test=depth_test, batch=batch)
+    one_pass = rasterize_visibility(whole_triangles(fixed, window), width, height, depth_test=depth_test, batch=None)
+    batches = rasterize_visibility(whole_triangles(fixed, window), width, height, depth_test=depth_test, batch=batch)
     assert len(np.unique(one_pass.tri_index)) > 40
     np.testing.assert_array_equal(batches.tri_index, one_pass.tri_index)
     np.testing.assert_array_equal(batches.depth, one_pass.depth)
