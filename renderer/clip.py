@@ -15,8 +15,16 @@ left it to the top-left rule, and VTK then drew one pixel we did not).
 Each output vertex carries its barycentric weights with respect to the *source*
 triangle, so later stages interpolate the source's attributes (Sutherland–Hodgman
 polygon clipping; the clipped polygon is re-triangulated as a fan).
+
+What comes out (:class:`Clipped`) names its triangles rather than copying them: most of
+a mesh lies wholly inside the view and is kept as it is, and a copy of each such
+triangle's corners and weights would cost some 170 bytes a triangle for nothing; only the
+pieces that cutting makes get tables of their own. :func:`clip_triangles` writes every
+triangle out, for lessons and tests.
 """
 from __future__ import annotations
+
+from typing import NamedTuple
 
 import numpy as np
 from renderer.jit import njit, prange
@@ -115,82 +123,159 @@ def clip_one(verts_clip, triangles, t, poly, bary, tmp_poly, tmp_bary):
     return n
 
 
-def clip_triangles(verts_clip, triangles, ws=None, trivial=True):
-    """Clip triangles given as (N, 4) clip-space vertices and (T, 3) vertex indices.
+class Clipped(NamedTuple):
+    """Stage 4's output: K triangles in source order, each a source triangle kept whole or a
+    piece that clipping cut from one.
+
+    A triangle kept whole (trivially accepted) is not copied: its corners are its source
+    triangle's vertices, in order, with weights (1, 0, 0), (0, 1, 0), (0, 0, 1). Only the
+    pieces — usually few — get tables of their own.
+
+    source (K,) int32 : the source triangle (row of ``triangles``) of each.
+    piece (K,) int32 : −1 for a triangle kept whole, else its row in the piece tables.
+    piece_clip (P, 3, 4) : the pieces' clip-space corners.
+    piece_bary (P, 3, 3) : each corner's barycentric weights in its source triangle.
+    """
+
+    source: np.ndarray
+    piece: np.ndarray
+    piece_clip: np.ndarray
+    piece_bary: np.ndarray
+
+
+def clip_mesh(verts_clip, triangles, ws=None, trivial=True) -> Clipped:
+    """Clip triangles given as (N, 4) clip-space vertices and (T, 3) vertex indices (:class:`Clipped`).
 
     **Trivial reject and accept** (Cohen–Sutherland outcodes, :func:`outcode`): a
     triangle whose three vertices all lie outside one plane is dropped; one whose vertices
-    are all inside every plane is kept as it is; only the others are cut
-    (:func:`clip_one`). Two parallel passes over the triangles — count the pieces, then
-    write them at their prefix-sum offsets — keep the source order.
+    are all inside every plane is kept as it is (no copy); only the others are cut
+    (:func:`clip_one`) into pieces. Parallel passes over the triangles — count what each
+    leaves, then write at the prefix-sum offsets — keep the source order.
 
-    Parameters
-    ----------
     ws : renderer.workspace.Workspace, optional; the outputs then live in it.
     trivial : False cuts every triangle against all six planes (the plain path the tests
-        compare the trivial accept and reject with: the same output).
+        compare the trivial accept and reject with: every triangle becomes a piece, with the
+        same corners and weights).
+    """
+    verts_clip = np.ascontiguousarray(verts_clip, dtype=np.float64)
+    triangles = np.ascontiguousarray(triangles, dtype=np.int64)
+    codes = empty(ws, "clip.codes", len(verts_clip), np.uint8)
+    outcodes(verts_clip, codes)
+    counts = empty(ws, "clip.counts", len(triangles), np.uint8)
+    cut = empty(ws, "clip.cut", len(triangles), np.bool_)
+    count_pieces(verts_clip, triangles, codes, bool(trivial), counts, cut)
+    offsets = empty(ws, "scratch.per_triangle", len(triangles) + 1, np.int64)
+    offsets[0] = 0
+    np.cumsum(counts, out=offsets[1:])
+    cut_ids = np.flatnonzero(cut)
+    piece_offsets = np.zeros(len(cut_ids) + 1, np.int64)
+    np.cumsum(counts[cut_ids], out=piece_offsets[1:])
+    k, p = int(offsets[-1]), int(piece_offsets[-1])
+    out = Clipped(source=empty(ws, "clip.source", k, np.int32), piece=empty(ws, "clip.piece", k, np.int32),
+                  piece_clip=empty(ws, "clip.piece_clip", (p, 3, 4)),
+                  piece_bary=empty(ws, "clip.piece_bary", (p, 3, 3)))
+    write_whole(counts, cut, offsets, out.source, out.piece)
+    write_pieces(verts_clip, triangles, cut_ids, offsets, piece_offsets, *out)
+    return out
+
+
+@njit(cache=True, parallel=True)
+def count_pieces(verts_clip, triangles, codes, trivial, counts, cut):
+    """First pass: how many triangles each source triangle leaves after clipping, into
+    ``counts``, and whether they are pieces cut from it, into ``cut`` (``trivial`` False: no
+    trivial accept or reject, every triangle is cut)."""
+    for t in prange(triangles.shape[0]):
+        c0, c1, c2 = codes[triangles[t, 0]], codes[triangles[t, 1]], codes[triangles[t, 2]]
+        if trivial and c0 & c1 & c2:  # all outside one plane: trivially rejected
+            counts[t], cut[t] = 0, False
+        elif trivial and (c0 | c1 | c2) == 0:  # all inside every plane: trivially accepted
+            counts[t], cut[t] = 1, False
+        else:
+            poly, bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
+            n = clip_one(verts_clip, triangles, t, poly, bary, np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3)))
+            counts[t], cut[t] = max(n - 2, 0), n >= 3
+
+
+@njit(cache=True)
+def write_whole(counts, cut, offsets, source, piece):
+    """Second pass, triangles kept whole: their entry at ``offsets[t]`` names them, no piece."""
+    for t in range(counts.shape[0]):
+        if counts[t] and not cut[t]:
+            source[offsets[t]] = t
+            piece[offsets[t]] = -1
+
+
+@njit(cache=True, parallel=True)
+def write_pieces(verts_clip, triangles, cut_ids, offsets, piece_offsets, source, piece, piece_clip, piece_bary):
+    """Second pass, triangles that were cut: the pieces of source triangle ``t = cut_ids[i]``
+    at ``offsets[t]`` onward (rows ``piece_offsets[i]`` onward of the piece tables), as a fan
+    around the clipped polygon's first vertex."""
+    for i in prange(cut_ids.shape[0]):
+        t = cut_ids[i]
+        k, p = offsets[t], piece_offsets[i]
+        poly, bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
+        n = clip_one(verts_clip, triangles, t, poly, bary, np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3)))
+        for j in range(1, n - 1):
+            for c in range(4):
+                piece_clip[p, 0, c], piece_clip[p, 1, c], piece_clip[p, 2, c] = poly[0, c], poly[j, c], poly[j + 1, c]
+            for c in range(3):
+                piece_bary[p, 0, c], piece_bary[p, 1, c], piece_bary[p, 2, c] = bary[0, c], bary[j, c], bary[j + 1, c]
+            source[k], piece[k] = t, p
+            k += 1
+            p += 1
+
+
+@njit(cache=True)
+def corner_rows(source, piece, triangles, n_vertices, rows):
+    """The rows of each triangle's corners into ``rows`` (K, 3), in a table that holds the
+    ``n_vertices`` source vertices first and then the pieces' corners, three per piece (as
+    :func:`renderer.pipeline.clip_and_map` lays out the window-space table)."""
+    for k in range(source.shape[0]):
+        p = piece[k]
+        for v in range(3):
+            rows[k, v] = triangles[source[k], v] if p < 0 else n_vertices + 3 * p + v
+
+
+@njit(cache=True)
+def gather_corners(verts_clip, triangles, source, piece, piece_clip, piece_bary, out_clip, out_bary):
+    """Each triangle's clip-space corners and their weights, written out into ``out_clip``
+    (K, 3, 4) and ``out_bary`` (K, 3, 3): a source triangle's vertices with unit weights, or
+    its piece's rows."""
+    for k in range(source.shape[0]):
+        p = piece[k]
+        for v in range(3):
+            if p < 0:
+                for c in range(4):
+                    out_clip[k, v, c] = verts_clip[triangles[source[k], v], c]
+                for c in range(3):
+                    out_bary[k, v, c] = 1.0 if c == v else 0.0
+            else:
+                for c in range(4):
+                    out_clip[k, v, c] = piece_clip[p, v, c]
+                for c in range(3):
+                    out_bary[k, v, c] = piece_bary[p, v, c]
+
+
+def clipped_corners(clipped: Clipped, verts_clip, triangles, ws=None, name="clip.corners"):
+    """The triangles of ``clipped`` written out whole: (K, 3, 4) clip-space corners, (K, 3, 3)
+    weights in the source triangle and (K,) int64 source triangles (in workspace ``ws``
+    under ``name``)."""
+    k = len(clipped.source)
+    out_clip, out_bary = empty(ws, f"{name}.clip", (k, 3, 4)), empty(ws, f"{name}.bary", (k, 3, 3))
+    gather_corners(np.ascontiguousarray(verts_clip, dtype=np.float64), np.ascontiguousarray(triangles, dtype=np.int64),
+                   *clipped, out_clip, out_bary)
+    out_source = empty(ws, f"{name}.source", k, np.int64)
+    out_source[:] = clipped.source
+    return out_clip, out_bary, out_source
+
+
+def clip_triangles(verts_clip, triangles, ws=None, trivial=True):
+    """:func:`clip_mesh`, with every kept triangle written out (for lessons and tests).
 
     Returns
     -------
     out_clip : (K, 3, 4) clip-space vertices of the kept triangles, in source order.
     out_bary : (K, 3, 3) each vertex's barycentric weights in its source triangle.
-    out_source : (K,) index of the source triangle.
+    out_source : (K,) int64 index of the source triangle.
     """
-    verts_clip = np.ascontiguousarray(verts_clip, dtype=np.float64)
-    triangles = np.ascontiguousarray(triangles, dtype=np.int64)
-    codes = empty(ws, "clip.codes", len(verts_clip), np.int64)
-    outcodes(verts_clip, codes)
-    counts = empty(ws, "clip.counts", len(triangles) + 1, np.int64)
-    count_pieces(verts_clip, triangles, codes, bool(trivial), counts[1:])
-    counts[0] = 0
-    offsets = np.cumsum(counts, out=counts)
-    k = int(offsets[-1])
-    out_clip = empty(ws, "clip.clip", (k, 3, 4))
-    out_bary = empty(ws, "clip.bary", (k, 3, 3))
-    out_source = empty(ws, "clip.source", k, np.int64)
-    write_pieces(verts_clip, triangles, codes, bool(trivial), offsets, out_clip, out_bary, out_source)
-    return out_clip, out_bary, out_source
-
-
-@njit(cache=True, parallel=True)
-def count_pieces(verts_clip, triangles, codes, trivial, counts):
-    """First pass: how many triangles each source triangle leaves after clipping, into ``counts``
-    (``trivial`` False: no trivial accept or reject, every triangle is cut)."""
-    for t in prange(triangles.shape[0]):
-        c0, c1, c2 = codes[triangles[t, 0]], codes[triangles[t, 1]], codes[triangles[t, 2]]
-        if trivial and c0 & c1 & c2:  # all outside one plane: trivially rejected
-            counts[t] = 0
-        elif trivial and (c0 | c1 | c2) == 0:  # all inside every plane: trivially accepted
-            counts[t] = 1
-        else:
-            poly, bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
-            n = clip_one(verts_clip, triangles, t, poly, bary, np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3)))
-            counts[t] = max(n - 2, 0)
-
-
-@njit(cache=True, parallel=True)
-def write_pieces(verts_clip, triangles, codes, trivial, offsets, out_clip, out_bary, out_source):
-    """Second pass: the pieces of source triangle ``t`` at ``offsets[t]`` onward, as a fan
-    around the clipped polygon's first vertex; trivially accepted triangles copied whole."""
-    for t in prange(triangles.shape[0]):
-        k = offsets[t]
-        if offsets[t + 1] == k:
-            continue
-        c0, c1, c2 = codes[triangles[t, 0]], codes[triangles[t, 1]], codes[triangles[t, 2]]
-        if trivial and (c0 | c1 | c2) == 0:
-            for v in range(3):
-                for c in range(4):
-                    out_clip[k, v, c] = verts_clip[triangles[t, v], c]
-                for c in range(3):
-                    out_bary[k, v, c] = 1.0 if c == v else 0.0
-            out_source[k] = t
-            continue
-        poly, bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
-        n = clip_one(verts_clip, triangles, t, poly, bary, np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3)))
-        for i in range(1, n - 1):
-            for c in range(4):
-                out_clip[k, 0, c], out_clip[k, 1, c], out_clip[k, 2, c] = poly[0, c], poly[i, c], poly[i + 1, c]
-            for c in range(3):
-                out_bary[k, 0, c], out_bary[k, 1, c], out_bary[k, 2, c] = bary[0, c], bary[i, c], bary[i + 1, c]
-            out_source[k] = t
-            k += 1
+    return clipped_corners(clip_mesh(verts_clip, triangles, ws, trivial), verts_clip, triangles, ws)

@@ -7,28 +7,36 @@ the z-buffer (:mod:`renderer.raster`), 7. shading (:mod:`renderer.lit_colours`, 
 reflection models of :mod:`renderer.reflection`), 8. 8-bit output with the flip to image rows. Objects with
 opacity < 1 skip the z-buffer: after the opaque frame is shaded they are composited over
 it from per-pixel fragment lists (:mod:`renderer.translucency`).
+
+Memory: per-triangle tables stay short. Clipping names the triangles it keeps whole
+instead of copying them and the window mapping maps each vertex once
+(:class:`ClippedMesh`); the raster sets up and draws :data:`renderer.raster.BATCH`
+triangles at a time; shading gets tables for the triangles that won a pixel only
+(:mod:`renderer.visible`). ``RenderOptions(lean=False)`` is the plain path the tests
+compare this with.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import NamedTuple
 
 import numpy as np
 
 from lab.frame import Frame
 from renderer.camera import clipping_range, view_to_clip, world_to_view
-from renderer.clip import clip_triangles
+from renderer.clip import Clipped, clip_mesh, clipped_corners, corner_rows
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
-from renderer.raster import depth_to_window, rasterize_visibility
+from renderer.raster import BATCH, IndexedTriangles, depth_to_window, rasterize_visibility, setup_triangles
 from renderer.reflection.registry import material_table
 from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
 from renderer.texture_sampling import texture_table
 from renderer.translucency import draw_translucent
 from renderer.transform import normal_matrix, transform_vertices
-from renderer.window import clip_to_window, window_rows_to_image_rows
-from renderer.workspace import thread_workspace
+from renderer.visible import visible_triangles
+from renderer.window import window_into, window_rows_to_image_rows
+from renderer.workspace import empty, thread_workspace
 
 
 @dataclass(frozen=True)
@@ -41,11 +49,17 @@ class RenderOptions:
         slides do), for colours, positions and normals.
     spans : shade each row in spans of one triangle (the fast path, :mod:`renderer.spans`)
         or, False, pixel by pixel (the plain path; the same bytes, tests compare them).
+    lean : keep per-triangle tables short (the lean path): a triangle clipping keeps whole
+        is not copied, triangles are set up and drawn in batches, and shading gets the
+        tables of the triangles that won a pixel only; False (the plain path, the same
+        bytes, tests compare them) cuts every triangle against all six planes, writes each
+        out, and sets them all up at once for the raster and for shading.
     """
 
     fill_rule: str = "top-left"
     interpolation: str | None = None
     spans: bool = True
+    lean: bool = True
 
 
 class SceneGeometry(NamedTuple):
@@ -73,11 +87,11 @@ class SceneGeometry(NamedTuple):
 
 
 class ClippedTriangles(NamedTuple):
-    """The triangles after clipping (stage 4) and window mapping (stage 5), in draw order.
+    """Clipped triangles written out one by one (:meth:`ClippedMesh.written_out`), in draw order.
 
     tri_clip (K, 3, 4) clip-space vertices; clip_bary (K, 3, 3) their weights in the source
-    triangle; clip_source (K,) the source triangle; tri_window (K, 3, 3) window space (x, y
-    up, z in 0..1); tri_fixed (K, 3, 2) x and y on the 1/256-pixel grid.
+    triangle; clip_source (K,) int64 the source triangle; tri_window (K, 3, 3) window space
+    (x, y up, z in 0..1); tri_fixed (K, 3, 2) int64 x and y on the 1/256-pixel grid.
     """
 
     tri_clip: np.ndarray
@@ -86,9 +100,72 @@ class ClippedTriangles(NamedTuple):
     tri_window: np.ndarray
     tri_fixed: np.ndarray
 
-    def take(self, index) -> "ClippedTriangles":
-        """The triangles picked by ``index`` (a mask, an order or a slice), in that order."""
-        return ClippedTriangles(*(a[index] for a in self))
+
+@dataclass(frozen=True)
+class ClippedMesh:
+    """The triangles after clipping (stage 4) and window mapping (stage 5), in draw order,
+    held as indices: nothing is copied per triangle.
+
+    Each of the K triangles names its source triangle and, when clipping cut it, its piece
+    (:class:`renderer.clip.Clipped`). Its corners are rows of vertex tables: rows 0 … N − 1
+    are the scene's vertices (the corners of a triangle kept whole), rows N + 3p + v corner
+    v of piece p (:func:`renderer.clip.corner_rows`). A vertex shared by many triangles is
+    mapped to the window once, which gives each of them the bits it would get alone.
+
+    clip_source (K,) int32, piece (K,) int32 (−1: kept whole); clipped: the
+    :class:`renderer.clip.Clipped` these index (all of the frame's pieces); geometry: the
+    :class:`SceneGeometry` (its ``triangles`` and ``verts_clip``); window (N + 3P, 3) and
+    fixed (N + 3P, 2) int64: the rows in window space (:func:`renderer.window.clip_to_window`).
+    """
+
+    clip_source: np.ndarray
+    piece: np.ndarray
+    clipped: Clipped
+    geometry: SceneGeometry
+    window: np.ndarray
+    fixed: np.ndarray
+
+    @property
+    def count(self) -> int:
+        return len(self.clip_source)
+
+    def take(self, index) -> "ClippedMesh":
+        """The triangles picked by ``index`` (a mask or an order), in that order."""
+        return replace(self, clip_source=self.clip_source[index], piece=self.piece[index])
+
+    def corner_rows(self, a: int = 0, b: int | None = None, ws=None, name="clipped.rows") -> np.ndarray:
+        """(b − a, 3) int64: the rows of the corners of triangles a … b − 1 in ``window`` and ``fixed``."""
+        source, piece = self.clip_source[a:b], self.piece[a:b]
+        rows = empty(ws, name, (len(source), 3), np.int64)
+        corner_rows(source, piece, self.geometry.triangles, len(self.geometry.verts_clip), rows)
+        return rows
+
+    def indexed(self, ws=None, name="clipped.rows") -> IndexedTriangles:
+        """The triangles as the raster takes them (:class:`renderer.raster.IndexedTriangles`)."""
+        return IndexedTriangles(lambda a, b: self.corner_rows(a, b, ws, name), self.count, self.fixed, self.window)
+
+    def corners_written_out(self, ws=None, name="clipped"):
+        """``(tri_clip, clip_bary, clip_source)`` as :class:`ClippedTriangles` holds them."""
+        picked = self.clipped._replace(source=self.clip_source, piece=self.piece)
+        return clipped_corners(picked, self.geometry.verts_clip, self.geometry.triangles, ws, name)
+
+    def written_out(self) -> ClippedTriangles:
+        """Every table of :class:`ClippedTriangles`, one row per triangle (a copy)."""
+        rows = self.corner_rows()
+        return ClippedTriangles(*self.corners_written_out(), self.window[rows], self.fixed[rows])
+
+
+def clip_and_map(geo: SceneGeometry, width: int, height: int, ws=None, trivial: bool = True) -> ClippedMesh:
+    """Stages 4 and 5: clip the scene's triangles (:func:`renderer.clip.clip_mesh`; ``trivial``
+    False cuts every one) and map the scene's vertices and the pieces' corners to the
+    window, once each."""
+    clipped = clip_mesh(geo.verts_clip, geo.triangles, ws, trivial)
+    n, p = len(geo.verts_clip), len(clipped.piece_clip)
+    window = empty(ws, "window.window", (n + 3 * p, 3))
+    fixed = empty(ws, "window.fixed", (n + 3 * p, 2), np.int64)
+    window_into(geo.verts_clip, width, height, window[:n], fixed[:n])
+    window_into(clipped.piece_clip.reshape(-1, 4), width, height, window[n:], fixed[n:])
+    return ClippedMesh(clipped.source, clipped.piece, clipped, geo, window, fixed)
 
 
 class RasterRules(NamedTuple):
@@ -162,6 +239,21 @@ class Stages(NamedTuple):
     triangle: np.ndarray
 
 
+def shading_fragments(won: ClippedMesh, tri_index: np.ndarray, perspective: bool, ws=None) -> Fragments:
+    """The :class:`renderer.shading.Fragments` of the triangles that won a pixel (``won``,
+    numbered as ``tri_index`` numbers them, :func:`renderer.visible.visible_triangles`):
+    their corners and weights written out, their facing and set-up planes (set up
+    :data:`renderer.raster.BATCH` at a time; shading reads no rows or spans)."""
+    tri_clip, clip_bary, clip_source = won.corners_written_out(ws, "visible")
+    front, plane = empty(ws, "visible.front", won.count, np.bool_), empty(ws, "visible.plane", (won.count, 11))
+    for a in range(0, won.count, BATCH):
+        b = min(a + BATCH, won.count)
+        rows = won.corner_rows(a, b, ws, "visible.rows")
+        ccw, spans = empty(ws, "visible.ccw", (b - a, 3, 2), np.int64), empty(ws, "visible.spans", (b - a, 2), np.int64)
+        setup_triangles(rows, won.fixed, won.window, 0, False, front[a:b], ccw, spans, plane[a:b])
+    return Fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, perspective)
+
+
 def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     """Draw ``scene`` with scanlab's own pipeline.
 
@@ -199,40 +291,42 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     geo = transform_scene(scene, w2v, v2c)
 
     ws = thread_workspace()
-    tri_clip, clip_bary, clip_source = clip_triangles(geo.verts_clip, geo.triangles, ws)
-    clipped = ClippedTriangles(tri_clip, clip_bary, clip_source, *clip_to_window(tri_clip, width, height, ws))
+    lean = options.lean
+    clipped = clip_and_map(geo, width, height, ws, trivial=lean)
     hidden = scene.render.hidden_surface
     if hidden == "painter":  # back to front; the fragments then simply overwrite
-        clipped = clipped.take(painter_order(clipped.tri_window))
+        clipped = clipped.take(painter_order(clipped.written_out().tri_window))
     rules = RasterRules(options.fill_rule, depth_test=hidden == "zbuffer", cull_back=scene.render.cull_backfaces)
     # opaque objects through the z-buffer; translucent ones (opacity < 1) afterwards, as fragment lists
     materials = material_table(scene)
-    translucent = materials.opacity[geo.tri_object[clipped.clip_source]] < 1.0
+    translucent = (materials.opacity[geo.tri_object[clipped.clip_source]] < 1.0 if (materials.opacity < 1.0).any()
+                   else np.zeros(clipped.count, np.bool_))
     opaque = clipped.take(~translucent) if translucent.any() else clipped
-    vis = rasterize_visibility(opaque.tri_fixed, opaque.tri_window, width, height, rules.fill_rule, ws=ws,
-                               depth_test=rules.depth_test, cull_back=rules.cull_back)
+    vis = rasterize_visibility(opaque.indexed(ws, "raster.corners"), width, height, rules.fill_rule, ws=ws,
+                               depth_test=rules.depth_test, cull_back=rules.cull_back, batch=BATCH if lean else None)
+    won = opaque.take(visible_triangles(vis.tri_index, opaque.count, ws)) if lean else opaque  # as vis.tri_index counts
 
     lights = view_lights(scene.lights, cam, w2v, scene.render)
     inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
     perspective = (options.interpolation or scene.render.interpolation) == "perspective"
     rgb = np.empty((height, width, 3), np.uint8)
-    shade(Fragments(vis.tri_index, vis.setup.plane, vis.setup.front, opaque.tri_clip, opaque.clip_bary,
-                    opaque.clip_source, perspective), geo, inputs, to_8bit(np.asarray(scene.image.background)), rgb,
-          spans=options.spans)
+    shade(shading_fragments(won, vis.tri_index, perspective, ws), geo, inputs,
+          to_8bit(np.asarray(scene.image.background)), rgb, spans=options.spans)
     coverage = vis.tri_index >= 0
     if translucent.any():
-        coverage = coverage | draw_translucent(clipped.take(translucent), vis.depth, rgb, geo, inputs,
+        coverage = coverage | draw_translucent(clipped.take(translucent).written_out(), vis.depth, rgb, geo, inputs,
                                                scene.render.transparency, perspective, rules, ws)
     frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth_to_window(vis.depth)),
                   coverage=window_rows_to_image_rows(coverage))
     if not keep_stages:
         return frame, None
-    source = opaque.clip_source
+    source = won.clip_source.astype(np.int64)
     tri_index = vis.tri_index
     triangle = np.where(tri_index >= 0, source[np.maximum(tri_index, 0)] if len(source) else -1, -1)
-    fixed = clipped.tri_fixed
+    tables = clipped.written_out()
+    fixed = tables.tri_fixed
     area = ((fixed[:, 1, 0] - fixed[:, 0, 0]) * (fixed[:, 2, 1] - fixed[:, 0, 1])
             - (fixed[:, 2, 0] - fixed[:, 0, 0]) * (fixed[:, 1, 1] - fixed[:, 0, 1]))
-    stages = Stages(geo, clipped.tri_window.copy(), fixed.copy(), clipped.clip_source.copy(), area > 0,
+    stages = Stages(geo, tables.tri_window, fixed, tables.clip_source, area > 0,
                     translucent.copy(), frame.depth, window_rows_to_image_rows(triangle).copy())
     return frame, stages

@@ -29,7 +29,7 @@ triangle order (see :func:`rasterize`), and gives the same bytes as one thread.
 """
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Callable, NamedTuple
 
 import numpy as np
 from renderer.jit import njit, prange
@@ -113,15 +113,16 @@ def scanline_span(f, row, rule=TOP_LEFT):
 
 
 @njit(cache=True, inline="always")
-def depth_plane(t, out):
-    """The window depth of triangle ``t`` (3, 3) as a plane ``z = az + zx·(x − ax) + zy·(y − ay)``:
-    writes ``out`` = (ax, ay, az, zx, zy).
+def depth_plane(t, i0, i1, i2, out):
+    """The window depth of the triangle with corners ``t[i0]``, ``t[i1]``, ``t[i2]`` (rows of
+    a window-space table (M, 3)) as a plane ``z = az + zx·(x − ax) + zy·(y − ay)``: writes
+    ``out`` = (ax, ay, az, zx, zy).
 
     The corners are first sorted (by x, then y, then z), so the same three corners give
     the same bits in any order: coincident triangles tie exactly in the z-buffer. Where
     the triangle has no area, zx = zy = 0 (it draws nothing anyway).
     """
-    a, b, c = 0, 1, 2
+    a, b, c = i0, i1, i2
     if (t[b, 0], t[b, 1], t[b, 2]) < (t[a, 0], t[a, 1], t[a, 2]):
         a, b = b, a
     if (t[c, 0], t[c, 1], t[c, 2]) < (t[b, 0], t[b, 1], t[b, 2]):
@@ -136,27 +137,41 @@ def depth_plane(t, out):
     out[4] = (dz2 * e1x - dz1 * e2x) / a2 if a2 != 0.0 else 0.0
 
 
+@njit(cache=True, inline="always")
+def triangle_plane(window, i0, i1, i2, plane):
+    """The float part of a triangle's set-up into ``plane`` (11,) (see :class:`TriangleSetup`):
+    corner 0 and the edges to corners 1 and 2, in the triangle's own corner order, then its
+    depth plane; the corners are rows ``i0, i1, i2`` of the window table (M, 3). Returns
+    twice its signed area in float (0.0: no weights can be worked out)."""
+    x0, y0 = window[i0, 0], window[i0, 1]
+    plane[0], plane[1] = x0, y0
+    plane[2], plane[3] = window[i1, 0] - x0, window[i1, 1] - y0
+    plane[4], plane[5] = window[i2, 0] - x0, window[i2, 1] - y0
+    depth_plane(window, i0, i1, i2, plane[6:])
+    return plane[2] * plane[5] - plane[4] * plane[3]
+
+
 @njit(cache=True, parallel=True)
-def setup_triangles(tri_fixed, tri_window, height, cull_back, front, ccw, rows, plane):
+def setup_triangles(corners, fixed, window, height, cull_back, front, ccw, rows, plane):
     """Per-triangle set-up, once: facing, counter-clockwise fixed vertices, rows, planes, into
-    ``front``, ``ccw``, ``rows`` and ``plane`` (see :class:`TriangleSetup`). With
-    ``cull_back`` a back-facing (clockwise) triangle gets no rows: back-face culling."""
-    for k in prange(tri_fixed.shape[0]):
-        area = signed_area_fixed(tri_fixed[k])
+    ``front``, ``ccw``, ``rows`` and ``plane`` (see :class:`TriangleSetup`). Triangle ``k``'s
+    corners are rows ``corners[k]`` of the vertex tables ``fixed`` (M, 2) int64 and
+    ``window`` (M, 3). With ``cull_back`` a back-facing (clockwise) triangle gets no rows:
+    back-face culling."""
+    for k in prange(corners.shape[0]):
+        i0, i1, i2 = corners[k, 0], corners[k, 1], corners[k, 2]
+        area = ((fixed[i1, 0] - fixed[i0, 0]) * (fixed[i2, 1] - fixed[i0, 1])
+                - (fixed[i2, 0] - fixed[i0, 0]) * (fixed[i1, 1] - fixed[i0, 1]))  # signed_area_fixed
         front[k] = area > 0
-        ccw[k] = tri_fixed[k]
         if area < 0:  # orient counter-clockwise for the span test; weights keep source order
-            ccw[k, 1], ccw[k, 2] = tri_fixed[k, 2], tri_fixed[k, 1]
-        x0, y0 = tri_window[k, 0, 0], tri_window[k, 0, 1]
-        plane[k, 0], plane[k, 1] = x0, y0
-        for v in range(1, 3):
-            plane[k, 2 * v] = tri_window[k, v, 0] - x0
-            plane[k, 2 * v + 1] = tri_window[k, v, 1] - y0
-        depth_plane(tri_window[k], plane[k, 6:])
-        a2 = plane[k, 2] * plane[k, 5] - plane[k, 4] * plane[k, 3]
-        ys = tri_fixed[k, :, 1]
-        rows[k, 0] = max(0, ceil_div(ys.min(), SUBPIXEL))
-        rows[k, 1] = min(height - 1, ys.max() // SUBPIXEL)
+            i1, i2 = i2, i1
+        for c in range(2):
+            ccw[k, 0, c], ccw[k, 1, c], ccw[k, 2, c] = fixed[i0, c], fixed[i1, c], fixed[i2, c]
+        a2 = triangle_plane(window, corners[k, 0], corners[k, 1], corners[k, 2], plane[k])
+        y_min = min(fixed[i0, 1], fixed[i1, 1], fixed[i2, 1])
+        y_max = max(fixed[i0, 1], fixed[i1, 1], fixed[i2, 1])
+        rows[k, 0] = max(0, ceil_div(y_min, SUBPIXEL))
+        rows[k, 1] = min(height - 1, y_max // SUBPIXEL)
         if area == 0 or a2 == 0.0 or (cull_back and area < 0):  # nothing to draw, or a culled back face
             rows[k, 0], rows[k, 1] = 1, 0
 
@@ -204,11 +219,12 @@ def pixel_fragment(k, row, col, plane):
 
 
 @njit(cache=True, inline="always")
-def fill_row(k, row, setup, rule, depth_test, depth, tri_index):
-    """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes."""
+def fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index):
+    """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes (the
+    triangle is numbered ``first_index + k`` there)."""
     first, last = row_span(k, row, setup.ccw, depth.shape[1], rule)
     z_row = row_depth(k, row, setup.plane)
-    kk = np.int32(k)
+    kk = np.int32(first_index + k)
     for col in range(first, last + 1):
         z = pixel_depth(k, z_row, col, setup.plane)
         if z <= depth[row, col] or not depth_test:
@@ -217,15 +233,17 @@ def fill_row(k, row, setup, rule, depth_test, depth, tri_index):
 
 
 @njit(cache=True, parallel=True)
-def rasterize(setup, n_bands, rule, depth_test, depth, tri_index):
+def rasterize(setup, n_bands, rule, depth_test, first_index, clear, depth, tri_index):
     """Scan-convert every triangle of ``setup`` into the visibility buffer (the loop kernel).
 
     The image's rows are dealt out to ``n_bands`` bands (:mod:`renderer.bands`), filled in
-    parallel; each band clears its rows and then draws *every* triangle in order, on its
-    own rows only. A pixel belongs to one band and sees the triangles in draw order, so the
-    result is the same, bit for bit, as a serial loop (z-buffer ties included).
-    ``depth_test`` False draws every fragment over what is there (the painter's algorithm,
-    or no hidden-surface removal at all): then the last triangle drawn wins.
+    parallel; each band draws *every* triangle in order, on its own rows only (after
+    clearing them, with ``clear``). A pixel belongs to one band and sees the triangles in
+    draw order, so the result is the same, bit for bit, as a serial loop (z-buffer ties
+    included). ``depth_test`` False draws every fragment over what is there (the painter's
+    algorithm, or no hidden-surface removal at all): then the last triangle drawn wins.
+    ``first_index`` is the number of the setup's first triangle in ``tri_index`` (the
+    triangles arrive in batches, :func:`rasterize_visibility`).
     depth (H, W) int32, the 24-bit depth (:data:`DEPTH_CLEAR` where empty), tri_index (H, W)
     int32 (:data:`EMPTY` where none): outputs, in window rows (y up). The weights are not
     stored: shading works them out (:func:`screen_weights`) for the one visible fragment
@@ -234,13 +252,14 @@ def rasterize(setup, n_bands, rule, depth_test, depth, tri_index):
     """
     height, width = depth.shape
     for b in prange(n_bands):
-        for row in range(b, height, n_bands):
-            for col in range(width):
-                depth[row, col] = DEPTH_CLEAR
-                tri_index[row, col] = EMPTY
+        if clear:
+            for row in range(b, height, n_bands):
+                for col in range(width):
+                    depth[row, col] = DEPTH_CLEAR
+                    tri_index[row, col] = EMPTY
         for k in range(setup.ccw.shape[0]):
             for row in range(first_row_of_band(setup.rows[k, 0], b, n_bands), setup.rows[k, 1] + 1, n_bands):
-                fill_row(k, row, setup, rule, depth_test, depth, tri_index)
+                fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index)
 
 
 @njit(cache=True, parallel=True)
@@ -253,27 +272,61 @@ def weights_of_visible(plane, tri_index, bary):
                 bary[row, col, 0], bary[row, col, 1] = screen_weights(k, row, col, plane)
 
 
-def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back: bool, ws=None,
-           name="raster") -> TriangleSetup:
-    """Allocate (in workspace ``ws`` under ``name``) and run :func:`setup_triangles`."""
-    k_count = len(tri_fixed)
+BATCH = 1 << 15
+"""Triangles set up and drawn at a time: the set-up tables stay this long (about 5 MB),
+however many triangles the scene has."""
+
+
+class IndexedTriangles(NamedTuple):
+    """Triangles as rows of vertex tables: ``corners(a, b)`` gives the corner rows (b − a, 3)
+    of triangles a … b − 1 (of ``count``) in ``fixed`` (M, 2) int64, x and y on the
+    1/256-pixel grid, and ``window`` (M, 3), window space (:mod:`renderer.window`)."""
+
+    corners: Callable[[int, int], np.ndarray]
+    count: int
+    fixed: np.ndarray
+    window: np.ndarray
+
+
+def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray) -> IndexedTriangles:
+    """Per-triangle tables (K, 3, 2) and (K, 3, 3) as :class:`IndexedTriangles`: triangle k's
+    corners on rows 3k, 3k + 1, 3k + 2 of their vertex tables (3K, 2) and (3K, 3)."""
+    tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
+    tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
+    if len(tri_fixed) != len(tri_window):
+        raise ValueError("tri_fixed and tri_window must hold the same triangles")
+    corners = np.arange(3 * len(tri_fixed), dtype=np.int64).reshape(-1, 3)
+    return IndexedTriangles(lambda a, b: corners[a:b], len(corners), tri_fixed.reshape(-1, 2),
+                            tri_window.reshape(-1, 3))
+
+
+def set_up_corners(corners: np.ndarray, fixed: np.ndarray, window: np.ndarray, height: int, cull_back: bool, ws=None,
+                   name="raster") -> TriangleSetup:
+    """Allocate (in workspace ``ws`` under ``name``) and run :func:`setup_triangles` on the
+    triangles whose corners are rows ``corners`` (K, 3) of ``fixed`` (M, 2) and ``window`` (M, 3)."""
+    k_count = len(corners)
     setup = TriangleSetup(front=empty(ws, f"{name}.front", k_count, np.bool_),
                           ccw=empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64),
                           rows=empty(ws, f"{name}.rows", (k_count, 2), np.int64),
                           plane=empty(ws, f"{name}.plane", (k_count, 11)))
-    setup_triangles(tri_fixed, tri_window, height, bool(cull_back), *setup)
+    setup_triangles(corners, fixed, window, height, bool(cull_back), *setup)
     return setup
+
+
+def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back: bool, ws=None,
+           name="raster") -> TriangleSetup:
+    """:func:`set_up_corners` of triangles given whole: (K, 3, 2) fixed and (K, 3, 3) window corners."""
+    whole = whole_triangles(tri_fixed, tri_window)
+    return set_up_corners(whole.corners(0, whole.count), whole.fixed, whole.window, height, cull_back, ws, name)
 
 
 class Visibility(NamedTuple):
     """The opaque pass's visibility buffer (window rows, y up): ``depth`` (H, W) int32, the
     24-bit integer depth (:data:`DEPTH_CLEAR` where empty); ``tri_index`` (H, W) int32, the
-    triangle that won each pixel (:data:`EMPTY` where none); ``setup`` the triangles'
-    :class:`TriangleSetup` (its ``plane`` gives the weights, :func:`screen_weights`)."""
+    triangle that won each pixel (:data:`EMPTY` where none)."""
 
     depth: np.ndarray
     tri_index: np.ndarray
-    setup: TriangleSetup
 
 
 def depth_to_window(depth: np.ndarray) -> np.ndarray:
@@ -281,34 +334,42 @@ def depth_to_window(depth: np.ndarray) -> np.ndarray:
     return depth / DEPTH_MAX
 
 
-def rasterize_visibility(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
-                         fill_rule: str = "top-left", n_bands: int | None = None, ws=None,
-                         depth_test: bool = True, cull_back: bool = False) -> Visibility:
-    """Set up the triangles and fill the visibility buffer (the Python wrapper the pipeline
-    calls); with a workspace ``ws`` every array lives in it. ``n_bands`` defaults to two per
-    thread (:func:`renderer.bands.raster_bands`); ``depth_test=False`` turns the z-buffer
-    test off; ``cull_back=True`` drops back-facing triangles."""
-    tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
-    tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
-    if len(tri_fixed) != len(tri_window):
-        raise ValueError("tri_fixed and tri_window must hold the same triangles")
-    setup = set_up(tri_fixed, tri_window, height, cull_back, ws, "raster")
+def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, fill_rule: str = "top-left",
+                         n_bands: int | None = None, ws=None, depth_test: bool = True, cull_back: bool = False,
+                         batch: int | None = BATCH) -> Visibility:
+    """Set up the triangles and fill the visibility buffer (the Python wrapper the pipeline calls).
+
+    The triangles (:class:`IndexedTriangles`) are drawn in order, ``batch`` at a time (None:
+    all at once): each batch is set up (:func:`setup_triangles`) and filled
+    (:func:`rasterize`) over what the batches before it left, so the buffer is the one a
+    single pass over all of them fills. With a workspace ``ws`` every array lives in it.
+    ``n_bands`` defaults to two per thread (:func:`renderer.bands.raster_bands`);
+    ``depth_test=False`` turns the z-buffer test off; ``cull_back=True`` drops back-facing triangles.
+    """
     depth = empty(ws, "raster.depth", (height, width), np.int32)
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)
-    rasterize(setup, raster_bands(height, n_bands), FILL_RULES[fill_rule], bool(depth_test), depth, tri_index)
-    return Visibility(depth, tri_index, setup)
+    bands, rule, count = raster_bands(height, n_bands), FILL_RULES[fill_rule], triangles.count
+    step = max(count, 1) if batch is None else int(batch)
+    for a in range(0, max(count, 1), step):
+        rows = np.ascontiguousarray(triangles.corners(a, min(a + step, count)), dtype=np.int64)
+        setup = set_up_corners(rows, triangles.fixed, triangles.window, height, cull_back, ws, "raster")
+        rasterize(setup, bands, rule, bool(depth_test), a, a == 0, depth, tri_index)
+    return Visibility(depth, tri_index)
 
 
 def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,
                         fill_rule: str = "top-left", n_bands: int | None = None, ws=None,
                         depth_test: bool = True, cull_back: bool = False):
-    """:func:`rasterize_visibility` in the textbook's terms (for lessons and tests).
+    """:func:`rasterize_visibility` of triangles given whole, in the textbook's terms (for
+    lessons and tests): ``tri_fixed`` (K, 3, 2) and ``tri_window`` (K, 3, 3).
 
     Returns ``depth`` (H, W) window depth 0..1 on the 24-bit grid, ``tri_index`` (H, W),
     ``bary`` (H, W, 2) the screen-space weights of each visible triangle's vertices 1 and 2
     (undefined where empty), all in window rows (y up), and ``front`` (K,) per triangle.
     """
-    vis = rasterize_visibility(tri_fixed, tri_window, width, height, fill_rule, n_bands, ws, depth_test, cull_back)
+    whole = whole_triangles(tri_fixed, tri_window)
+    vis = rasterize_visibility(whole, width, height, fill_rule, n_bands, ws, depth_test, cull_back)
+    setup = set_up_corners(whole.corners(0, whole.count), whole.fixed, whole.window, height, cull_back)
     bary = np.zeros((height, width, 2))
-    weights_of_visible(vis.setup.plane, vis.tri_index, bary)
-    return depth_to_window(vis.depth), vis.tri_index, bary, vis.setup.front
+    weights_of_visible(setup.plane, vis.tri_index, bary)
+    return depth_to_window(vis.depth), vis.tri_index, bary, setup.front

@@ -20,35 +20,35 @@ SUBPIXEL_BITS = 8
 SUBPIXEL = 1 << SUBPIXEL_BITS  # 256 steps per pixel
 
 
-def clip_to_window(tri_clip, width, height, ws=None):
-    """(K, 3, 4) clip-space triangles → window space.
+def clip_to_window(tri_clip, width, height, ws=None, name="window.mapped"):
+    """Clip-space points (..., 4) → window space: (K, 3, 4) triangles, or (M, 4) vertices.
 
-    Returns ``tri_window`` (K, 3, 3) float (x, y up, z in 0..1) and ``tri_fixed``
-    (K, 3, 2) int64, x and y snapped to the 1/256 grid:
-    ``x_fixed = round_half_even((x − 0.5)·256)``, so multiples of 256 are pixel centres.
-    With a workspace ``ws`` the outputs live in it.
+    Returns ``window`` (..., 3) float (x, y up, z in 0..1) and ``fixed`` (..., 2) int64,
+    x and y snapped to the 1/256 grid: ``x_fixed = round_half_even((x − 0.5)·256)``, so
+    multiples of 256 are pixel centres. Each point is mapped on its own, so a vertex
+    shared by many triangles is mapped once and gives them all the same bits. With a
+    workspace ``ws`` the outputs live in it (under ``name``).
     """
-    tri_clip = np.ascontiguousarray(tri_clip, dtype=np.float64).reshape(-1, 3, 4)
-    tri_window = empty(ws, "window.window", (len(tri_clip), 3, 3))
-    tri_fixed = empty(ws, "window.fixed", (len(tri_clip), 3, 2), np.int64)
-    window_into(tri_clip, width, height, tri_window, tri_fixed)
-    return tri_window, tri_fixed
+    tri_clip = np.ascontiguousarray(tri_clip, dtype=np.float64)
+    shape = tri_clip.shape[:-1]
+    window = empty(ws, f"{name}.window", shape + (3,))
+    fixed = empty(ws, f"{name}.fixed", shape + (2,), np.int64)
+    window_into(tri_clip.reshape(-1, 4), width, height, window.reshape(-1, 3), fixed.reshape(-1, 2))
+    return window, fixed
 
 
 @njit(cache=True)
-def window_into(tri_clip, width, height, tri_window, tri_fixed):
-    """The loop kernel of :func:`clip_to_window`."""
-    k_count = tri_clip.shape[0]
-    for k in range(k_count):
-        for v in range(3):
-            w = tri_clip[k, v, 3]
-            x = (tri_clip[k, v, 0] / w + 1.0) * (width / 2.0)
-            y = (tri_clip[k, v, 1] / w + 1.0) * (height / 2.0)
-            tri_window[k, v, 0] = x
-            tri_window[k, v, 1] = y
-            tri_window[k, v, 2] = (tri_clip[k, v, 2] / w + 1.0) / 2.0
-            tri_fixed[k, v, 0] = np.int64(np.rint((x - 0.5) * SUBPIXEL))
-            tri_fixed[k, v, 1] = np.int64(np.rint((y - 0.5) * SUBPIXEL))
+def window_into(points_clip, width, height, window, fixed):
+    """The loop kernel of :func:`clip_to_window`, point by point: (M, 4) → (M, 3), (M, 2)."""
+    for i in range(points_clip.shape[0]):
+        w = points_clip[i, 3]
+        x = (points_clip[i, 0] / w + 1.0) * (width / 2.0)
+        y = (points_clip[i, 1] / w + 1.0) * (height / 2.0)
+        window[i, 0] = x
+        window[i, 1] = y
+        window[i, 2] = (points_clip[i, 2] / w + 1.0) / 2.0
+        fixed[i, 0] = np.int64(np.rint((x - 0.5) * SUBPIXEL))
+        fixed[i, 1] = np.int64(np.rint((y - 0.5) * SUBPIXEL))
 
 
 def window_rows_to_image_rows(a: np.ndarray) -> np.ndarray:

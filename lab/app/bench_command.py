@@ -31,7 +31,7 @@ def _sizes(args) -> list[tuple[int, int]]:
 
 def measure(args, say=print) -> dict:
     """Every figure of one ``scanlab bench`` run, as a dict (what ``--json`` writes)."""
-    from compare.bench import peak_memory, startup_seconds, time_frames
+    from compare.bench import startup_seconds, time_frames
     from compare.bench_scenes import BENCH_SCENES, MeshUnavailable, bench_scene
 
     names = args.scenes or list(BENCH_SCENES)
@@ -86,6 +86,8 @@ def measure(args, say=print) -> dict:
 
 def _measure_memory(row: dict, name: str, size, say) -> None:
     """Peak memory of each side into ``row["memory"]``; a child that failed is said in one line."""
+    from compare.bench import peak_memory
+
     try:
         row["memory"] = {side: peak_memory(side, name, size) for side in ("ours", "reference")}
     except (RuntimeError, subprocess.TimeoutExpired) as exc:

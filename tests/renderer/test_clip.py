@@ -191,3 +191,29 @@ def test_trivial_accept_and_reject_give_what_cutting_every_triangle_gives(seed):
     assert len(fast[0]) > 0 and 0 < (fast[2] < 120).sum()
     for a, b in zip(fast, plain):
         np.testing.assert_array_equal(a, b)
+
+
+# (plane, a clip-space vertex outside it): near z < −w, far z > w, right x > w, left x < −w, top y > w, bottom y < −w
+OUTSIDE = [(0, (0.0, 0.0, -2.0, 1.0)), (1, (0.0, 0.0, 2.0, 1.0)), (2, (2.0, 0.0, 0.0, 1.0)),
+           (3, (-2.0, 0.0, 0.0, 1.0)), (4, (0.0, 2.0, 0.0, 1.0)), (5, (0.0, -2.0, 0.0, 1.0))]
+
+
+@pytest.mark.parametrize("plane, out", OUTSIDE, ids=["near", "far", "right", "left", "top", "bottom"])
+def test_triangles_kept_whole_are_named_not_copied(plane, out):
+    """Against each plane: a triangle inside is kept whole (piece −1, no rows of its own), one
+    wholly outside is dropped, one straddling the plane becomes pieces; written out, they are
+    exactly what cutting every triangle gives."""
+    from renderer.clip import clip_mesh, clipped_corners
+
+    inside = [(0.1, 0.1, 0.1, 1.0), (0.3, -0.2, 0.0, 1.0), (-0.2, 0.4, -0.3, 1.0)]
+    outside = [out, tuple(1.5 * np.asarray(out)[:3]) + (1.0,), tuple(np.asarray(out)[:3] + 0.1) + (1.0,)]
+    verts = np.array(inside + outside, dtype=np.float64)
+    tris = np.array([[0, 1, 2], [3, 4, 5], [0, 3, 1], [2, 0, 1]], dtype=np.int64)  # inside, outside, straddling, inside
+    clipped = clip_mesh(verts, tris)
+    assert clipped.source.tolist()[0] == 0 and clipped.source.tolist()[-1] == 3
+    whole = clipped.piece < 0
+    assert clipped.source[whole].tolist() == [0, 3] and 1 not in clipped.source.tolist()
+    assert set(clipped.source[~whole].tolist()) == {2} and len(clipped.piece_clip) == (~whole).sum() >= 1
+    assert sorted(clipped.piece[~whole].tolist()) == list(range(len(clipped.piece_clip)))
+    for a, b in zip(clipped_corners(clipped, verts, tris), clip_triangles(verts, tris, trivial=False)):
+        np.testing.assert_array_equal(a, b)

@@ -364,6 +364,26 @@ def test_z_buffer_keeps_the_nearest_and_among_equals_the_last():
     assert (np.sum(alone == best, axis=0) > 1).sum() > 50  # many pixels really are ties
 
 
+@pytest.mark.parametrize("batch", [1, 7, 79])
+@pytest.mark.parametrize("depth_test", [True, False])
+def test_drawing_in_batches_fills_the_buffer_one_pass_fills(batch, depth_test):
+    """The 80 overlapping triangles (ties included) drawn ``batch`` at a time, each batch set up
+    and filled over what the ones before it left: the depth and triangle of every pixel are
+    those of one pass over all of them, z-buffer on or off."""
+    from renderer.raster import rasterize_visibility, whole_triangles
+
+    width, height = 37, 29
+    rng = np.random.default_rng(11)
+    fixed = rng.integers(-3 * SUBPIXEL, 40 * SUBPIXEL, (80, 3, 2))
+    z = np.where(rng.random((80, 1)) < 0.5, rng.choice([0.25, 0.5], (80, 1)), rng.uniform(0, 1, (80, 3)))
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, z[..., None] * np.ones((80, 3, 1))], axis=2)
+    one_pass = rasterize_visibility(whole_triangles(fixed, window), width, height, depth_test=depth_test, batch=None)
+    batches = rasterize_visibility(whole_triangles(fixed, window), width, height, depth_test=depth_test, batch=batch)
+    assert len(np.unique(one_pass.tri_index)) > 40
+    np.testing.assert_array_equal(batches.tri_index, one_pass.tri_index)
+    np.testing.assert_array_equal(batches.depth, one_pass.depth)
+
+
 def test_the_bottom_right_option_hands_ties_to_the_other_edges():
     """fill_rule="bottom-right" (the lessons' deliberately wrong rule) owns right and top edges instead of left and bottom."""
     f, w = triangles([(1, 1), (5, 1), (1, 5)])

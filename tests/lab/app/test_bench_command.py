@@ -57,3 +57,12 @@ def test_a_public_mesh_that_cannot_be_read_is_a_row_that_says_so_even_with_conte
     assert done.returncode == 0 and "Traceback" not in done.stderr, done.stderr
     assert "igea-270k 64x48: unavailable: the public mesh is not the binary PLY expected" in done.stdout + done.stderr
     assert "other core busy, icosphere:level=1 64x48" in done.stdout + done.stderr
+
+
+def test_memory_all_measures_both_sides_of_every_row(tmp_path):
+    out = tmp_path / "bench.json"
+    done = scanlab("bench", "icosphere:level=1", "--size", "64x48", "--repeat", "1", "--memory", "all",
+                   "--no-startup", "--json", str(out))
+    assert done.returncode == 0 and "Traceback" not in done.stderr, done.stderr
+    memory = json.loads(out.read_text())["rows"][0]["memory"]
+    assert set(memory) == {"ours", "reference"} and all(v >= 0 for v in memory.values())
