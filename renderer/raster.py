@@ -144,9 +144,9 @@ def setup_triangles(tri_fixed, tri_window, height, cull_back, front, ccw, rows, 
     for k in prange(tri_fixed.shape[0]):
         area = signed_area_fixed(tri_fixed[k])
         front[k] = area > 0
-        ccw[k] = tri_fixed[k]
-        if area < 0:  # orient counter-clockwise for the span test; weights keep source order
-            ccw[k, 1], ccw[k, 2] = tri_fixed[k, 2], tri_fixed[k, 1]
+        second, third = (2, 1) if area < 0 else (1, 2)  # counter-clockwise for the span test; weights keep source order
+        for c in range(2):  # scalars, not array assignments: numba makes each of those a parallel loop of its own
+            ccw[k, 0, c], ccw[k, 1, c], ccw[k, 2, c] = tri_fixed[k, 0, c], tri_fixed[k, second, c], tri_fixed[k, third, c]
         x0, y0 = tri_window[k, 0, 0], tri_window[k, 0, 1]
         plane[k, 0], plane[k, 1] = x0, y0
         for v in range(1, 3):
@@ -154,9 +154,9 @@ def setup_triangles(tri_fixed, tri_window, height, cull_back, front, ccw, rows, 
             plane[k, 2 * v + 1] = tri_window[k, v, 1] - y0
         depth_plane(tri_window[k], plane[k, 6:])
         a2 = plane[k, 2] * plane[k, 5] - plane[k, 4] * plane[k, 3]
-        ys = tri_fixed[k, :, 1]
-        rows[k, 0] = max(0, ceil_div(ys.min(), SUBPIXEL))
-        rows[k, 1] = min(height - 1, ys.max() // SUBPIXEL)
+        fy0, fy1, fy2 = tri_fixed[k, 0, 1], tri_fixed[k, 1, 1], tri_fixed[k, 2, 1]
+        rows[k, 0] = max(0, ceil_div(min(fy0, fy1, fy2), SUBPIXEL))
+        rows[k, 1] = min(height - 1, max(fy0, fy1, fy2) // SUBPIXEL)
         if area == 0 or a2 == 0.0 or (cull_back and area < 0):  # nothing to draw, or a culled back face
             rows[k, 0], rows[k, 1] = 1, 0
 
