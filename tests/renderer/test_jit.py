@@ -1,6 +1,6 @@
 """The compiled-kernel cache never serves code older than the sources (renderer/jit.py).
 
-The end-to-end case reproduces the stale-kernel bug: ``shade_rows`` (shading.py) inlines
+The end-to-end case reproduces the stale-kernel bug: ``shade_band_lit_spans`` (shading.py) inlines
 ``vtk_span`` (reflection/vtk_spans.py); editing only vtk_spans.py must change the next render, in a
 fresh process, while an unchanged tree starts from its warm cache.
 """
