@@ -226,24 +226,20 @@ def modulate_span(k, row, c0, count, frags, geo, textures, o, colour):
 
 
 @njit(cache=True, inline="always")
-def shade_lit_span(k, row, c0, c1, frags, geo, materials, lights, lit, colour, rgb):
-    """Colour the pixels c0 … c1 − 1 of ``row`` (all showing clipped triangle ``k``) of an
-    untextured object that :func:`span_covers`: an untextured FACE_COLOUR triangle holds
-    one colour, stored along the span; an object whose model has a span kernel
-    (:func:`renderer.reflection.registry.span_applies`) is interpolated, lit and stored in
-    one float32 loop over the span (:mod:`renderer.spans`) — or, when the colour cannot
-    change along it (a flat triangle whose model's colour depends on the normal alone),
-    worked out at its first pixel and stored along it."""
-    s = frags.clip_source[k]
-    o = geo.tri_object[s]
-    path = materials.shading_path[o]
-    if path == FACE_COLOUR:
-        r, g, b = lit.face[s, 0] + lit.face[s, 3], lit.face[s, 1] + lit.face[s, 4], lit.face[s, 2] + lit.face[s, 5]
-        store(rgb, row, c0, r, g, b)
-        copy_along(rgb, row, c0, c1)
-        return
-    face = path == PIXEL_FACE_NORMAL
-    consts = span_setup(k, row, c0, frags, geo, face)
+def hold_face_colour(s, row, c0, c1, lit, rgb):
+    """Source triangle ``s``'s lit colour (primary + secondary, :mod:`renderer.lit_colours`)
+    stored along the pixels c0 … c1 − 1 of ``row``."""
+    r, g, b = lit.face[s, 0] + lit.face[s, 3], lit.face[s, 1] + lit.face[s, 4], lit.face[s, 2] + lit.face[s, 5]
+    store(rgb, row, c0, r, g, b)
+    copy_along(rgb, row, c0, c1)
+
+
+@njit(cache=True, inline="always")
+def light_span(o, row, c0, c1, consts, face, materials, lights, colour, rgb):
+    """Object ``o``'s span kernel over the pixels c0 … c1 − 1 of ``row`` (``consts``, ``face``
+    from :func:`renderer.spans.span_setup`), stored as 8 bits; when the colour cannot change
+    along the span (a flat triangle whose model's colour depends on the normal alone), it is
+    worked out at the first pixel and stored along it."""
     constant = face and span_normal_only(o, materials, lights)
     count = 1 if constant else c1 - c0
     reflect_span(o, materials, lights, consts, face, count, colour, rgb[row, c0:c0 + count])
@@ -252,10 +248,27 @@ def shade_lit_span(k, row, c0, c1, frags, geo, materials, lights, lit, colour, r
 
 
 @njit(cache=True, inline="always")
+def shade_lit_span(k, row, c0, c1, frags, geo, materials, lights, lit, colour, rgb):
+    """Colour the pixels c0 … c1 − 1 of ``row`` (all showing clipped triangle ``k``) of an
+    object that :func:`span_covers`: a FACE_COLOUR triangle holds one colour
+    (:func:`hold_face_colour`); any other is lit by its model's span kernel (:func:`light_span`).
+    The same bytes as :func:`shade_span`, which takes the same ways for such an object."""
+    s = frags.clip_source[k]
+    o = geo.tri_object[s]
+    path = materials.shading_path[o]
+    if path == FACE_COLOUR:
+        hold_face_colour(s, row, c0, c1, lit, rgb)
+        return
+    face = path == PIXEL_FACE_NORMAL
+    light_span(o, row, c0, c1, span_setup(k, row, c0, frags, geo, face), face, materials, lights, colour, rgb)
+
+
+@njit(cache=True, inline="always")
 def span_covers(o, materials, textures, lights):
-    """True when object ``o`` is shaded by :func:`shade_lit_span`: untextured, and either
+    """True when object ``o`` can be shaded by :func:`shade_lit_span`: untextured, and either
     FACE_COLOUR or lit per pixel (PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED) by a model with a
-    span kernel for these lights. :func:`spans_cover_all` is its Python twin."""
+    span kernel for these lights (:func:`shade_span`'s first way, or its second untextured).
+    :func:`spans_cover_all` is its Python twin."""
     path = materials.shading_path[o]
     return not textures.textured[o] and (path == FACE_COLOUR or (
         (path == PIXEL_FACE_NORMAL or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights)))
@@ -274,25 +287,32 @@ def shade_span(k, row, c0, c1, frags, geo, inputs, colour, rgb):
     """Colour the pixels c0 … c1 − 1 of ``row``, all showing clipped triangle ``k``;
     ``inputs`` is ``(materials, textures, lights, lit)`` (as :class:`ShadingInputs`).
 
-    Three ways, the first that applies: an untextured object that :func:`span_covers`
-    goes through :func:`shade_lit_span`; a textured one whose model has a span kernel is
-    lit in that kernel's float32 loop (:mod:`renderer.spans`), multiplied by its texels
-    (:func:`modulate_span`), then stored; anything else goes pixel by pixel through
-    :func:`fragment_colour`.
+    Three ways, the first that applies: an untextured FACE_COLOUR triangle holds one colour
+    (:func:`hold_face_colour`); an object whose model has a span kernel
+    (:func:`renderer.reflection.registry.span_applies`) is interpolated and lit in one
+    float32 loop over the span (:mod:`renderer.spans`): untextured, stored by
+    :func:`light_span`; textured, multiplied by its texels (:func:`modulate_span`), then
+    stored; anything else goes pixel by pixel through :func:`fragment_colour`. (One
+    :func:`renderer.spans.span_setup` for both span ways: the parallel loop this is inlined
+    into compiled in 52 s instead of 29 s with one for each.)
     """
     materials, textures, lights, lit = inputs
     s = frags.clip_source[k]
     o = geo.tri_object[s]
-    if span_covers(o, materials, textures, lights):
-        shade_lit_span(k, row, c0, c1, frags, geo, materials, lights, lit, colour, rgb)
-        return
     path = materials.shading_path[o]
+    textured = textures.textured[o]
+    if path == FACE_COLOUR and not textured:
+        hold_face_colour(s, row, c0, c1, lit, rgb)
+        return
     face = path == PIXEL_FACE_NORMAL
-    if textures.textured[o] and (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
+    if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
         consts = span_setup(k, row, c0, frags, geo, face)
-        span_colours(o, materials, lights, consts, face, c1 - c0, colour)
-        modulate_span(k, row, c0, c1 - c0, frags, geo, textures, o, colour)
-        store_span(colour, c1 - c0, rgb[row, c0:c1])
+        if textured:
+            span_colours(o, materials, lights, consts, face, c1 - c0, colour)
+            modulate_span(k, row, c0, c1 - c0, frags, geo, textures, o, colour)
+            store_span(colour, c1 - c0, rgb[row, c0:c1])
+        else:
+            light_span(o, row, c0, c1, consts, face, materials, lights, colour, rgb)
         return
     for col in range(c0, c1):
         l1, l2 = screen_weights(k, row, col, frags.plane)
@@ -316,67 +336,52 @@ def fill_background(rgb, row, c0, c1, background):
         rgb[row, c, 0], rgb[row, c, 1], rgb[row, c, 2] = background[0], background[1], background[2]
 
 
-@njit(cache=True, inline="always")
-def shade_band(band, n_bands, frags, geo, materials, textures, lights, lit, background, spans, rgb):
-    """Colour the rows ``band, band + n_bands, …`` (one band, :mod:`renderer.bands`) and
-    store 8-bit RGB, every shading path.
+@njit(cache=True, parallel=True)
+def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands, spans, rgb):
+    """Colour every covered pixel and store 8-bit RGB (the loop kernel), every shading path.
 
     Each row is walked in spans of pixels that show the same triangle (:func:`shade_span`);
     an empty pixel gets the 8-bit ``background``. ``spans`` False cuts every span to one
-    pixel (the plain path the tests compare the spans with: the same bytes).
+    pixel (the plain path the tests compare the spans with: the same bytes). Rows are
+    independent and each pixel is written once, so a parallel loop gives the same bytes as
+    a serial one, whatever the number of bands ``n_bands`` the rows are dealt to
+    (:mod:`renderer.bands`). The walk is written out in the parallel loop: as a call to a
+    kernel compiled on its own, frames were 5–25 % slower (ico5, textured-sphere; one
+    thread); as an inlined function, this kernel took 8 s longer to compile.
     """
     height, width = frags.tri_index.shape
-    inputs = (materials, textures, lights, lit)
-    colour = np.empty((3, max(width, 1)), np.float32)  # a span's linear colours (:func:`shade_span`)
-    for row in range(band, height, n_bands):
-        col = 0
-        while col < width:
-            k, end = frags.tri_index[row, col], span_end(frags.tri_index, row, col, spans)
-            if k == EMPTY:
-                fill_background(rgb, row, col, end, background)
-            else:
-                shade_span(k, row, col, end, frags, geo, inputs, colour, rgb)
-            col = end
-
-
-@njit(cache=True, inline="always")
-def shade_band_lit_spans(band, n_bands, frags, geo, materials, lights, lit, background, rgb):
-    """:func:`shade_band` for a frame whose every object :func:`span_covers`: spans only,
-    through :func:`shade_lit_span`. The same bytes, without the pixel-by-pixel models and
-    textures: a frame that needs no more compiles no more (:func:`shade_rows_lit_spans`)."""
-    height, width = frags.tri_index.shape
-    colour = np.empty((3, max(width, 1)), np.float32)
-    for row in range(band, height, n_bands):
-        col = 0
-        while col < width:
-            k, end = frags.tri_index[row, col], span_end(frags.tri_index, row, col, True)
-            if k == EMPTY:
-                fill_background(rgb, row, col, end, background)
-            else:
-                shade_lit_span(k, row, col, end, frags, geo, materials, lights, lit, colour, rgb)
-            col = end
-
-
-@njit(cache=True, parallel=True)
-def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands, spans, rgb):
-    """Colour every covered pixel and store 8-bit RGB (the loop kernel): the bands of rows
-    (:func:`shade_band`) in parallel. Rows are independent and each pixel is written once,
-    so a parallel loop gives the same bytes as a serial one, whatever the number of bands
-    ``n_bands`` the rows are dealt to (:mod:`renderer.bands`). The band is inlined into the
-    parallel loop: as a call to a kernel compiled on its own it compiled no faster, and
-    frames were 5–25 % slower (ico5, textured-sphere; one thread).
-    """
     for band in prange(n_bands):
-        shade_band(band, n_bands, frags, geo, materials, textures, lights, lit, background, spans, rgb)
+        inputs = (materials, textures, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
+        colour = np.empty((3, max(width, 1)), np.float32)  # a span's linear colours (:func:`shade_span`)
+        for row in range(band, height, n_bands):
+            col = 0
+            while col < width:
+                k, end = frags.tri_index[row, col], span_end(frags.tri_index, row, col, spans)
+                if k == EMPTY:
+                    fill_background(rgb, row, col, end, background)
+                else:
+                    shade_span(k, row, col, end, frags, geo, inputs, colour, rgb)
+                col = end
 
 
 @njit(cache=True, parallel=True)
 def shade_rows_lit_spans(frags, geo, materials, lights, lit, background, n_bands, rgb):
-    """:func:`shade_rows` with :func:`shade_band_lit_spans`: what a frame whose every object
-    :func:`span_covers` compiles and runs (:func:`shade` chooses). A fresh process drawing
-    icosphere level 5 compiled shading in 8 s instead of 27.5 s (CPU)."""
+    """:func:`shade_rows` for a frame whose every object :func:`span_covers`: spans only,
+    through :func:`shade_lit_span`. The same bytes, without the pixel-by-pixel models and
+    textures: a frame that needs no more compiles no more (:func:`shade` chooses). A fresh
+    process drawing icosphere level 5 compiled its shading in 8 s instead of 27.5 s (CPU)."""
+    height, width = frags.tri_index.shape
     for band in prange(n_bands):
-        shade_band_lit_spans(band, n_bands, frags, geo, materials, lights, lit, background, rgb)
+        colour = np.empty((3, max(width, 1)), np.float32)
+        for row in range(band, height, n_bands):
+            col = 0
+            while col < width:
+                k, end = frags.tri_index[row, col], span_end(frags.tri_index, row, col, True)
+                if k == EMPTY:
+                    fill_background(rgb, row, col, end, background)
+                else:
+                    shade_lit_span(k, row, col, end, frags, geo, materials, lights, lit, colour, rgb)
+                col = end
 
 
 def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, rgb: np.ndarray,
