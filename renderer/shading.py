@@ -248,11 +248,13 @@ def light_span(o, row, c0, c1, consts, face, materials, lights, colour, rgb):
 
 
 @njit(cache=True, inline="always")
-def shade_lit_span(k, row, c0, c1, frags, geo, materials, lights, lit, colour, rgb):
+def shade_lit_span(k, row, c0, c1, frags, geo, inputs, colour, rgb):
     """Colour the pixels c0 … c1 − 1 of ``row`` (all showing clipped triangle ``k``) of an
     object that :func:`span_covers`: a FACE_COLOUR triangle holds one colour
     (:func:`hold_face_colour`); any other is lit by its model's span kernel (:func:`light_span`).
-    The same bytes as :func:`shade_span`, which takes the same ways for such an object."""
+    The same bytes as :func:`shade_span`, which takes the same ways for such an object.
+    ``inputs`` is ``(materials, lights, lit)``."""
+    materials, lights, lit = inputs
     s = frags.clip_source[k]
     o = geo.tri_object[s]
     path = materials.shading_path[o]
@@ -372,6 +374,7 @@ def shade_rows_lit_spans(frags, geo, materials, lights, lit, background, n_bands
     process drawing icosphere level 5 compiled its shading in 8 s instead of 27.5 s (CPU)."""
     height, width = frags.tri_index.shape
     for band in prange(n_bands):
+        inputs = (materials, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
         colour = np.empty((3, max(width, 1)), np.float32)
         for row in range(band, height, n_bands):
             col = 0
@@ -380,7 +383,7 @@ def shade_rows_lit_spans(frags, geo, materials, lights, lit, background, n_bands
                 if k == EMPTY:
                     fill_background(rgb, row, col, end, background)
                 else:
-                    shade_lit_span(k, row, col, end, frags, geo, materials, lights, lit, colour, rgb)
+                    shade_lit_span(k, row, col, end, frags, geo, inputs, colour, rgb)
                 col = end
 
 
