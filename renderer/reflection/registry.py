@@ -23,7 +23,8 @@ from renderer.reflection.classic_model import classic_lighting
 from renderer.reflection.materials import Materials
 from renderer.reflection.opengl_model import opengl_lighting
 from renderer.reflection.vtk_model import vtk_lighting
-from renderer.reflection.vtk_spans import store8, vtk_normal_only, vtk_span, vtk_span_applies, vtk_span_colours
+from renderer.reflection.vtk_spans import (store8, vtk_normal_only, vtk_span, vtk_span_applies, vtk_span_colours,
+                                          vtk_spans_apply)
 
 REFLECTION_MODELS = {m.name: m for m in (vtk_model.MODEL, opengl_model.MODEL, classic_model.MODEL)}
 """Model name (the scene's ``model``) → its :class:`~renderer.reflection.materials.ReflectionModel`."""
@@ -52,6 +53,11 @@ def span_applies(o, materials, lights):
     lights; else shading lights it pixel by pixel with :func:`reflect`. Only the vtk model
     has one (:mod:`~renderer.reflection.vtk_spans`)."""
     return materials.model[o] == VTK and vtk_span_applies(o, materials, lights)
+
+
+def spans_apply(o, materials, lights) -> bool:
+    """:func:`span_applies` in Python (for choosing a kernel before shading)."""
+    return bool(materials.model[o] == VTK and vtk_spans_apply(o, materials, lights))
 
 
 @njit(cache=True, inline="always")

@@ -36,6 +36,11 @@ def vtk_span_applies(o, materials, lights):
     return vtk_complexity(o, materials, lights) <= DIRECTIONAL
 
 
+def vtk_spans_apply(o, materials, lights) -> bool:
+    """:func:`vtk_span_applies` in Python (for choosing a kernel before shading)."""
+    return (lights.complexity if materials.lit[o] else UNLIT) <= DIRECTIONAL
+
+
 @njit(cache=True, inline="always")
 def vtk_normal_only(o, materials, lights):
     """True when the colour depends on nothing but the normal (unlit, or a lone headlight):

@@ -5,13 +5,14 @@ worked out by hand in the test's docstring (8 bits: ``round_half_even(255·c)`` 
 """
 import numpy as np
 import pytest
+from numba import njit
 
 from renderer.lit_colours import LitColours
 from renderer.pipeline import SceneGeometry
 from renderer.reflection.materials import (FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED,
                                            VERTEX_COLOUR)
 from renderer.shading import (Fragments, ShadingInputs, face_normals, fragment_weights, plane_normal, shade,
-                              to_8bit)
+                              span_covers, spans_cover_all, to_8bit)
 from renderer.texture_sampling import NEAREST, REPEAT, Textures
 
 from .kernel_inputs import materials, view_lights
@@ -171,3 +172,59 @@ def test_bands_of_rows_do_not_change_a_byte():
 def test_to_8bit_rounds_half_to_even_in_float32():
     """127.5 → 128, 63.75 → 64, 0.5/255 → 0, 1.5/255 → 2."""
     assert to_8bit(np.array([0.5, 0.25, 0.5 / 255, 1.5 / 255])).tolist() == [128, 64, 0, 2]
+
+
+# --------------------------------------------------------------------------- which kernel shades a frame
+
+def preset_tables():
+    """(label, materials, textures, lights) of every preset under every shading and model (the
+    tables :func:`renderer.render` hands the shading kernels)."""
+    from lab.loading import load_scene
+    from lab.presets import SCENES_DIR
+    from renderer.camera import world_to_view
+    from renderer.lights import view_lights as lights_in_view
+    from renderer.reflection.registry import material_table
+    from renderer.texture_sampling import texture_table
+
+    for path in sorted(SCENES_DIR.glob("*.toml")):
+        scene = load_scene(path)
+        for shading in (None, "flat", "gouraud", "phong"):
+            for model in (None, "opengl", "classic"):
+                s = scene.with_overrides(shading=shading, model=model)
+                lights = lights_in_view(s.lights, s.camera, world_to_view(s.camera), s.render)
+                yield f"{path.stem}/{shading}/{model}", material_table(s), texture_table(s), lights
+
+
+@njit
+def covered_by_kernel(materials, textures, lights):
+    return [span_covers(o, materials, textures, lights) for o in range(materials.model.shape[0])]
+
+
+def test_the_kernel_choice_in_python_agrees_with_the_kernels_own_rule():
+    """``spans_cover_all`` (Python, chooses the kernel) says yes exactly when the kernels' own
+    ``span_covers`` holds for every object, on every preset × shading × model; both answers occur."""
+    answers = set()
+    for label, mats, textures, lights in preset_tables():
+        answer = spans_cover_all(mats, textures, lights)
+        assert answer == all(covered_by_kernel(mats, textures, lights)), label
+        answers.add(answer)
+    assert answers == {True, False}
+
+
+def test_a_frame_the_span_kernels_cover_never_reaches_the_general_kernel(monkeypatch):
+    """An icosphere under a headlight (vtk model, untextured) is shaded by ``shade_rows_lit_spans``
+    alone; a textured sphere by the general ``shade_rows``. Same bytes as pixel by pixel."""
+    import renderer.shading as shading
+    from lab.framing import shape_scene
+    from lab.loading import load_scene
+    from renderer import RenderOptions, render
+
+    scene = shape_scene("icosphere:level=2")
+    plain = render(scene, RenderOptions(spans=False)).rgb
+    calls = []
+    for name in ("shade_rows", "shade_rows_lit_spans"):
+        kernel = getattr(shading, name)
+        monkeypatch.setattr(shading, name, lambda *a, _k=kernel, _n=name: calls.append(_n) or _k(*a))
+    np.testing.assert_array_equal(render(scene).rgb, plain)
+    render(load_scene("textured-sphere"))
+    assert calls == ["shade_rows_lit_spans", "shade_rows"]
