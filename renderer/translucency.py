@@ -279,23 +279,26 @@ are never cleared."""
 
 F32_ZERO = np.float32(0.0)
 
+STRIP_ROWS = 16
+"""Rows of a strip, the unit of work of :func:`shade_fragments`: every triangle is drawn over
+one strip before the next, so the strip's buffers stay in the cache while its layers
+arrive (measured: dealing single rows, each pixel's buffers came back from memory for
+each of its layers)."""
 
-@njit(cache=True, inline="always")
-def add_run_to_oit(colour, a, row, c0, count, seen, sums):
-    """The run's ``count`` fragments (linear colours ``colour`` (3, ≥ count) float32, alpha
-    ``a``) added, in order, to the ``oit`` buffers of pixels ``c0 …`` of ``row``
-    (:func:`oit_add`; empty buffers where ``seen`` is still 0), and counted in ``seen``."""
+
+@njit(cache=True)
+def add_run_to_oit(red, green, blue, a, count, seen, sum_r, sum_g, sum_b, weight, transmit):
+    """A run's ``count`` fragments (linear colours ``red``, ``green``, ``blue`` float32, alpha
+    ``a``) added to the ``oit`` buffers of its pixels (:func:`oit_add`; empty buffers where
+    ``seen`` is still 0), and counted in ``seen``. Every argument but ``a`` and ``count``
+    is one row's stretch of a plane, one value per pixel of the run: compiled on its own,
+    with plain 1-D arrays, this loop vectorises (measured: 1 ns a fragment instead of 6)."""
     for i in range(count):
-        col = c0 + i
-        fresh = seen[row, col] == 0
-        (sums[SUM_R, row, col], sums[SUM_G, row, col], sums[SUM_B, row, col], sums[WEIGHT, row, col],
-         sums[TRANSMIT, row, col]) = oit_add(F32_ZERO if fresh else sums[SUM_R, row, col],
-                                             F32_ZERO if fresh else sums[SUM_G, row, col],
-                                             F32_ZERO if fresh else sums[SUM_B, row, col],
-                                             F32_ZERO if fresh else sums[WEIGHT, row, col],
-                                             F32_ONE if fresh else sums[TRANSMIT, row, col],
-                                             colour[0, i], colour[1, i], colour[2, i], a)
-        seen[row, col] += 1
+        fresh = seen[i] == 0
+        sum_r[i], sum_g[i], sum_b[i], weight[i], transmit[i] = oit_add(
+            F32_ZERO if fresh else sum_r[i], F32_ZERO if fresh else sum_g[i], F32_ZERO if fresh else sum_b[i],
+            F32_ZERO if fresh else weight[i], F32_ONE if fresh else transmit[i], red[i], green[i], blue[i], a)
+        seen[i] += 1
 
 
 @njit(cache=True, inline="always")
@@ -329,40 +332,47 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, n_bands
     """
     height, width = seen.shape
     fill = colours.shape[0] > 0
+    n_strips = (height + STRIP_ROWS - 1) // STRIP_ROWS
     for b in prange(n_bands):
         inputs = (materials, textures, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
         colour = np.empty((3, max(width, 1)), np.float32)  # a run's linear colours
-        for row in range(b, height, n_bands):
-            for col in range(width):
-                seen[row, col] = 0
-        for k in range(setup.ccw.shape[0]):
-            a = np.float32(materials.opacity[geo.tri_object[frags.clip_source[k]]])
-            for row in range(first_row_of_band(setup.rows[k, 0], b, n_bands), setup.rows[k, 1] + 1, n_bands):
-                first, last = row_span(k, row, setup.ccw, width, rule)
-                z_row = row_depth(k, row, setup.plane)
-                col = first
-                while col <= last:
-                    c0 = col
-                    while col <= last and (not depth_test or pixel_depth(k, z_row, col, setup.plane) <= opaque_depth[row, col]):
-                        col += 1
-                        if not spans:
-                            break
-                    if col == c0:  # behind the opaque surface
-                        col += 1
-                        continue
-                    span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, colour)
-                    if fill:
-                        for i in range(col - c0):
-                            j = start[row, c0 + i] + seen[row, c0 + i]
-                            colours[j, 0], colours[j, 1], colours[j, 2] = colour[0, i], colour[1, i], colour[2, i]
-                            seen[row, c0 + i] += 1
-                    else:
-                        add_run_to_oit(colour, a, row, c0, col - c0, seen, sums)
-        if not fill:
-            behind = np.empty(3, np.int64)
-            out = np.empty(3, np.int64)
-            for row in range(b, height, n_bands):
-                resolve_oit_row(sums, seen, row, rgb, behind, out)
+        behind = np.empty(3, np.int64)
+        out = np.empty(3, np.int64)
+        for strip in range(b, n_strips, n_bands):
+            lo, hi = strip * STRIP_ROWS, min(strip * STRIP_ROWS + STRIP_ROWS, height) - 1
+            for row in range(lo, hi + 1):
+                for col in range(width):
+                    seen[row, col] = 0
+            for k in range(setup.ccw.shape[0]):
+                a = np.float32(materials.opacity[geo.tri_object[frags.clip_source[k]]])
+                for row in range(max(setup.rows[k, 0], lo), min(setup.rows[k, 1], hi) + 1):
+                    first, last = row_span(k, row, setup.ccw, width, rule)
+                    z_row = row_depth(k, row, setup.plane)
+                    col = first
+                    while col <= last:
+                        c0 = col
+                        while col <= last and (not depth_test
+                                               or pixel_depth(k, z_row, col, setup.plane) <= opaque_depth[row, col]):
+                            col += 1
+                            if not spans:
+                                break
+                        if col == c0:  # behind the opaque surface
+                            col += 1
+                            continue
+                        span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, colour)
+                        if fill:
+                            for i in range(col - c0):
+                                j = start[row, c0 + i] + seen[row, c0 + i]
+                                colours[j, 0], colours[j, 1], colours[j, 2] = colour[0, i], colour[1, i], colour[2, i]
+                                seen[row, c0 + i] += 1
+                        else:
+                            add_run_to_oit(colour[0], colour[1], colour[2], a, col - c0, seen[row, c0:col],
+                                           sums[SUM_R, row, c0:col], sums[SUM_G, row, c0:col],
+                                           sums[SUM_B, row, c0:col], sums[WEIGHT, row, c0:col],
+                                           sums[TRANSMIT, row, c0:col])
+            if not fill:
+                for row in range(lo, hi + 1):
+                    resolve_oit_row(sums, seen, row, rgb, behind, out)
 
 
 @njit(cache=True, parallel=True)
@@ -458,7 +468,8 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
                       np.ascontiguousarray(clipped.clip_bary), np.ascontiguousarray(clipped.clip_source),
                       bool(perspective))
     seen = empty(ws, "translucency.seen", (height, width), np.int32)
-    shading = (setup, frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, n_bands, rule,
+    strip_bands = raster_bands((height + STRIP_ROWS - 1) // STRIP_ROWS)
+    shading = (setup, frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, strip_bands, rule,
                bool(depth_test), bool(spans), opaque_depth, seen)
     if MODES[mode] == OIT and spans:
         shade_fragments(*shading, np.empty((1, 1), np.int64), np.empty((0, 3), np.float32),
