@@ -1,16 +1,20 @@
-"""Translucent objects (opacity < 1): a fragment list per pixel, shaded and composited.
+"""Translucent objects (opacity < 1): their fragments lit in runs and composited in draw order.
 
 Opaque objects are drawn first, exactly as without translucency (z-buffer, visibility
 buffer, :func:`renderer.shading.shade`). Then the triangles of translucent objects are
 scan-converted with the same rules (:func:`renderer.raster.scanline_span`, the top-left
-rule, the 24-bit integer depth of :func:`renderer.raster.pixel_fragment`) into a **fragment list**
-per pixel: every fragment not behind the opaque surface there (LEQUAL against the opaque
-depth), in draw order. Translucent fragments write no depth (neither does VTK's). Two
-passes: count the fragments of every pixel, then fill them in at prefix-sum offsets.
+rule, the 24-bit integer depth of :func:`renderer.raster.pixel_depth`): every fragment
+not behind the opaque surface there (LEQUAL against the opaque depth) counts, in draw
+order. Translucent fragments write no depth (neither does VTK's).
 
-Each fragment gets :func:`renderer.shading.fragment_colour` (the same colour an opaque
-fragment would get) and alpha = its object's opacity; the list is then composited over
-the opaque result ``B`` (the 8-bit colour already in the frame). Modes
+Each fragment gets the linear colour an opaque fragment would get before its 8-bit store,
+lit in runs of one triangle along a row (:mod:`renderer.fragment_spans`: VTK's model in
+float32, as VTK's shaders compute), and alpha = its object's opacity; the fragments are
+composited over the opaque result ``B`` (the 8-bit colour already in the frame). ``oit``
+needs no order but draw order, so each fragment is added to the pixel's buffers as it is
+drawn (:func:`shade_fragments`); the other modes sort, so their fragments are first
+gathered into a **fragment list** per pixel (:func:`fragment_lists`: count, then fill at
+prefix-sum offsets) and composited pixel by pixel (:func:`composite_lists`). Modes
 (``[render] transparency``):
 
 - ``oit``: weighted-average order-independent transparency (VTK's default),
