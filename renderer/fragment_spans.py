@@ -52,15 +52,16 @@ def span_linear_colours(k, row, c0, count, frags, geo, inputs, colour):
             for i in range(1, count):
                 colour[0, i], colour[1, i], colour[2, i] = colour[0, 0], colour[1, 0], colour[2, 0]
         return
-    pixel_by_pixel(k, row, c0, count, frags, geo, materials, textures, lights, lit, colour)
+    pixel_by_pixel(k, row, c0, count, frags, geo, inputs, colour)
 
 
 @njit(cache=True)
-def pixel_by_pixel(k, row, c0, count, frags, geo, materials, textures, lights, lit, colour):
+def pixel_by_pixel(k, row, c0, count, frags, geo, inputs, colour):
     """The fallback of :func:`span_linear_colours`: each pixel's
     :func:`renderer.shading.fragment_colour` (float64), as float32. Compiled on its own, not
     inlined into the kernels that call it: it is the biggest function of the shading code
     (every reflection model), and the fast path rarely needs it."""
+    materials, textures, lights, lit = inputs
     for i in range(count):
         l1, l2 = screen_weights(k, row, c0 + i, frags.plane)
         r, g, b = fragment_colour(k, l1, l2, frags, geo, materials, textures, lights, lit)

@@ -291,17 +291,18 @@ each of its layers)."""
 
 
 @njit(cache=True)
-def add_run_to_oit(red, green, blue, a, count, seen, sum_r, sum_g, sum_b, weight, transmit):
-    """A run's ``count`` fragments (linear colours ``red``, ``green``, ``blue`` float32, alpha
+def add_run_to_oit(colour, a, count, seen, sum_r, sum_g, sum_b, weight, transmit):
+    """A run's ``count`` fragments (linear colours ``colour`` (3, ≥ count) float32, alpha
     ``a``) added to the ``oit`` buffers of its pixels (:func:`oit_add`; empty buffers where
-    ``seen`` is still 0), and counted in ``seen``. Every argument but ``a`` and ``count``
-    is one row's stretch of a plane, one value per pixel of the run: compiled on its own,
-    with plain 1-D arrays, this loop vectorises (measured: 1 ns a fragment instead of 6)."""
+    ``seen`` is still 0), and counted in ``seen``. ``seen`` and the five buffers are one
+    row's stretch of a plane, one value per pixel of the run: compiled on its own, with
+    plain 1-D arrays, this loop vectorises (measured: 1 ns a fragment instead of 6)."""
     for i in range(count):
         fresh = seen[i] == 0
         sum_r[i], sum_g[i], sum_b[i], weight[i], transmit[i] = oit_add(
             F32_ZERO if fresh else sum_r[i], F32_ZERO if fresh else sum_g[i], F32_ZERO if fresh else sum_b[i],
-            F32_ZERO if fresh else weight[i], F32_ONE if fresh else transmit[i], red[i], green[i], blue[i], a)
+            F32_ZERO if fresh else weight[i], F32_ONE if fresh else transmit[i], colour[0, i], colour[1, i],
+            colour[2, i], a)
         seen[i] += 1
 
 
@@ -316,16 +317,40 @@ def resolve_oit_row(sums, seen, row, rgb, behind, out):
             rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = out[0], out[1], out[2]
 
 
+class RunRules(NamedTuple):
+    """How :func:`shade_fragments` draws: strips of :data:`STRIP_ROWS` rows dealt to
+    ``n_bands`` bands, the fill ``rule`` (a :data:`renderer.raster.FILL_RULES` code),
+    ``depth_test`` against the opaque z-buffer, ``spans`` (False: runs of one pixel)."""
+
+    n_bands: int
+    rule: int
+    depth_test: bool
+    spans: bool
+
+
+class RunTargets(NamedTuple):
+    """What :func:`shade_fragments` reads and writes (window rows): ``opaque_depth`` (H, W)
+    the opaque z-buffer; ``seen`` (H, W) int32 each pixel's fragments so far; ``start``
+    (H, W) int64 and ``colours`` (F, 3) float32 the fragment lists to fill (``colours``
+    empty: none); ``sums`` (5, H, W) float32 the ``oit`` buffers; ``rgb`` (H, W, 3) uint8."""
+
+    opaque_depth: np.ndarray
+    seen: np.ndarray
+    start: np.ndarray
+    colours: np.ndarray
+    sums: np.ndarray
+    rgb: np.ndarray
+
+
 @njit(cache=True, parallel=True)
-def shade_fragments(setup, frags, geo, materials, textures, lights, lit, n_bands, rule, depth_test, spans,
-                    opaque_depth, seen, start, colours, sums, rgb):
+def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, into):
     """Scan-convert the translucent triangles and light their fragments in runs (the loop kernel).
 
     The same fragments as :func:`collect_fragments`, in the same order: bands of rows in
     parallel, each drawing every triangle in order. Along a triangle's span on a row, each
     run of neighbouring fragments in front of the opaque surface is lit in one go
-    (:func:`renderer.fragment_spans.span_linear_colours`; ``spans`` False: runs of one
-    pixel, the plain path). ``seen`` (H, W) counts each pixel's fragments so far. Then:
+    (:func:`renderer.fragment_spans.span_linear_colours`; ``how`` a :class:`RunRules`;
+    ``into`` a :class:`RunTargets`). ``seen`` (H, W) counts each pixel's fragments so far. Then:
 
     - with ``colours`` (F, 3) float32 not empty: fragment ``j`` of pixel (row, col) gets
       its colour at ``start[row, col] + j`` (the lists of :func:`fragment_lists`);
@@ -334,6 +359,9 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, n_bands
       it), and when a band has drawn every triangle its rows are composited over ``rgb``
       (:func:`oit_resolve`) — no lists, no second pass.
     """
+    opaque_depth, seen, start = into.opaque_depth, into.seen, into.start
+    colours, sums, rgb = into.colours, into.sums, into.rgb
+    n_bands, rule, depth_test, spans = how.n_bands, how.rule, how.depth_test, how.spans
     height, width = seen.shape
     fill = colours.shape[0] > 0
     n_strips = (height + STRIP_ROWS - 1) // STRIP_ROWS
@@ -370,7 +398,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, n_bands
                                 colours[j, 0], colours[j, 1], colours[j, 2] = colour[0, i], colour[1, i], colour[2, i]
                                 seen[row, c0 + i] += 1
                         else:
-                            add_run_to_oit(colour[0], colour[1], colour[2], a, col - c0, seen[row, c0:col],
+                            add_run_to_oit(colour, a, col - c0, seen[row, c0:col],
                                            sums[SUM_R, row, c0:col], sums[SUM_G, row, c0:col],
                                            sums[SUM_B, row, c0:col], sums[WEIGHT, row, c0:col],
                                            sums[TRANSMIT, row, c0:col])
@@ -473,16 +501,17 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
                       bool(perspective))
     seen = empty(ws, "translucency.seen", (height, width), np.int32)
     strip_bands = raster_bands((height + STRIP_ROWS - 1) // STRIP_ROWS)
-    shading = (setup, frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, strip_bands, rule,
-               bool(depth_test), bool(spans), opaque_depth, seen)
+    shading = (setup, frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit,
+               RunRules(strip_bands, rule, bool(depth_test), bool(spans)))
     if MODES[mode] == OIT and spans:
-        shade_fragments(*shading, np.empty((1, 1), np.int64), np.empty((0, 3), np.float32),
-                        empty(ws, "translucency.sums", (5, height, width), np.float32), rgb)
+        shade_fragments(*shading, RunTargets(opaque_depth, seen, np.empty((1, 1), np.int64), np.empty((0, 3), np.float32),
+                                             empty(ws, "translucency.sums", (5, height, width), np.float32), rgb))
         return seen > 0
     lists = collect_lists(setup, opaque_depth, rule, depth_test, n_bands, ws)
     colours = empty(ws, "translucency.colours", (len(lists.tri), 3), np.float32)
     if len(colours):
-        shade_fragments(*shading, lists.start, colours, np.empty((0, 0, 5), np.float32), rgb)
+        shade_fragments(*shading, RunTargets(opaque_depth, seen, lists.start, colours,
+                                             np.empty((0, 0, 5), np.float32), rgb))
     alphas = inputs.materials.opacity[geo.tri_object[frags.clip_source]]
     composite_lists(lists, colours, alphas, MODES[mode], shading_bands(height), rgb)
     return lists.count > 0
