@@ -315,7 +315,7 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     coverage = vis.tri_index >= 0
     if translucent.any():
         coverage = coverage | draw_translucent(clipped.take(translucent).written_out(), vis.depth, rgb, geo, inputs,
-                                               scene.render.transparency, perspective, rules, ws)
+                                               scene.render.transparency, perspective, rules, ws, options.spans)
     frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth_to_window(vis.depth)),
                   coverage=window_rows_to_image_rows(coverage))
     if not keep_stages:

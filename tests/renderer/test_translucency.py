@@ -5,13 +5,17 @@ Every expected value is worked out by hand below, in 8-bit steps where the mode 
 ``mul8(a, b) = round(a·b/255)`` as a blend unit does. VTK parity of the same modes is in
 ``tests/compare/test_parity_translucency.py``.
 """
+from dataclasses import replace
+
+import numba
 import numpy as np
 import pytest
 
-from lab.scene import Camera, Image, Material, RenderSettings, Scene, SceneObject
+from lab.scene import Camera, Image, Light, Material, RenderSettings, Scene, SceneObject
 from lab.matrices import model_matrix
-from lab.shapes import quad
-from renderer import render
+from lab.normals import radial_normals
+from lab.shapes import cube, icosphere, quad
+from renderer import RenderOptions, render
 from renderer.raster import DEPTH_CLEAR, DEPTH_MAX
 from renderer.translucency import (DEPTH_PEELING, MODES, OIT, SORTED, blend8, composite_pixel, depth_order,
                                    fragment_lists, half, mul8)
@@ -128,8 +132,8 @@ def test_fragment_lists_count_every_translucent_fragment_in_draw_order():
     """Two copies of the corner triangle at depths .6 then .3 over an empty z-buffer: two fragments in
     each of the six pixels, the first drawn first; starts are the prefix sums of the counts."""
     fixed, window = triangles([(x, y, 0.6) for x, y in CORNER], [(x, y, 0.3) for x, y in CORNER])
-    front, lists = fragment_lists(fixed, window, np.full((4, 4), DEPTH_CLEAR, np.int32))
-    assert front.tolist() == [True, True]
+    setup, lists = fragment_lists(fixed, window, np.full((4, 4), DEPTH_CLEAR, np.int32))
+    assert setup.front.tolist() == [True, True]
     np.testing.assert_array_equal(lists.count, np.where(INSIDE, 2, 0))
     np.testing.assert_array_equal(lists.start.reshape(-1), np.concatenate([[0], np.cumsum(lists.count)[:-1]]))
     assert lists.longest == 2
@@ -180,3 +184,108 @@ def test_a_frame_of_two_translucent_squares(mode, expected):
     assert frame.coverage.all() and (frame.depth == 1.0).all()
     assert {tuple(int(c) for c in p) for p in frame.rgb.reshape(-1, 3)} == {expected}
     assert set(MODES) == {"oit", "depth_peeling", "sorted"}
+
+
+# --------------------------------------------------------------------------- the fast path against the plain one
+def layered_scene(mode="oit", hidden_surface="zbuffer", cull_backfaces=False, wrap="repeat", size=(97, 73)):
+    """Every case the fast path has to get right, in one frame of translucent objects:
+
+    - overlapping layers: a shiny phong sphere, front and back faces, inside a flat box;
+    - equal depths: two coincident quads of different colours (the tie goes by draw order);
+    - many layers per pixel: a stack of eight quads at different depths, crossed by the above;
+    - translucent over opaque: an opaque tilted quad cutting through the stack and the sphere,
+      so the depth test splits spans into runs (fragments behind it dropped);
+    - a textured sphere (seam in view, coordinates past 1 on a textured board) with ``wrap``;
+    - a far, finely divided sphere: runs of one or two pixels; a board crossing the near plane.
+    """
+    from lab.texture import Texture
+
+    def shiny(colour, opacity, specular=0.4):
+        return Material(color=colour, specular=specular, specular_power=25.0, opacity=opacity)
+
+    textured = icosphere(level=3, uv=1)
+    textured = replace(textured, point_normals=radial_normals(textured.points))
+    tex = Texture(np.random.default_rng(3).random((16, 32, 3)), filter="linear", wrap=wrap)
+    board = replace(quad(40.0), point_normals=np.tile([0.0, 0.0, 1.0], (4, 1)),
+                    tcoords=np.array([[-1.5, -1.5], [2.5, -1.5], [2.5, 2.5], [-1.5, 2.5]]))
+    objects = [
+        SceneObject(mesh=ball(3), material=shiny((0.9, 0.2, 0.1), 0.5), shading="phong"),
+        SceneObject(mesh=cube(1.6), material=shiny((0.9, 0.8, 0.1), 0.6, 0.0), shading="flat",
+                    model_to_world=model_matrix(rotate=(10.0, 30.0, 0.0))),
+        SceneObject(mesh=quad(1.2), material=shiny((0.1, 0.9, 0.2), 0.5), shading="flat",
+                    model_to_world=model_matrix(translate=(-0.5, 0.4, 0.9))),
+        SceneObject(mesh=quad(1.2), material=shiny((0.2, 0.1, 0.9), 0.4), shading="flat",
+                    model_to_world=model_matrix(translate=(-0.5, 0.4, 0.9))),
+        *(SceneObject(mesh=quad(0.9), material=shiny((0.1 * i, 0.9 - 0.1 * i, 0.5), 0.3 + 0.05 * i), shading="flat",
+                      model_to_world=model_matrix(translate=(0.45, -0.3, 1.0 - 0.25 * i))) for i in range(8)),
+        SceneObject(mesh=quad(2.5), material=Material(color=(0.6, 0.6, 0.6)), shading="flat",
+                    model_to_world=model_matrix(rotate=(0.0, 55.0, 0.0), translate=(0.5, -0.2, 0.0))),
+        SceneObject(mesh=textured, material=shiny((1.0, 1.0, 1.0), 0.7), shading="phong", texture=tex, model_to_world=model_matrix(scale=(0.5, 0.5, 0.5), rotate=(0.0, 200.0, 0.0),
+                                                             translate=(-1.1, -0.6, 0.5))),
+        SceneObject(mesh=ball(5), material=shiny((0.9, 0.5, 0.2), 0.5), shading="phong",
+                    model_to_world=model_matrix(scale=(0.3, 0.3, 0.3), translate=(1.8, 0.6, -3.0))),
+        SceneObject(mesh=board, material=shiny((1.0, 1.0, 1.0), 0.3), shading="phong", texture=tex,
+                    model_to_world=model_matrix(rotate=(100.0, 10.0, 0.0), translate=(0.0, -0.5, 0.0))),
+    ]
+    return Scene(image=Image(size=size, background=(0.1, 0.1, 0.15)),
+                 camera=Camera(position=(0.6, 0.9, 3.2), view_angle=40.0, clipping_range=(0.5, 30.0)),
+                 lights=(Light(kind="scene", position=(3.0, 4.0, 5.0)),), objects=tuple(objects),
+                 render=RenderSettings(transparency=mode, hidden_surface=hidden_surface,
+                                       cull_backfaces=cull_backfaces))
+
+
+def ball(level):
+    mesh = icosphere(level=level)
+    return replace(mesh, point_normals=radial_normals(mesh.points))
+
+
+def plain(scene):
+    """The plain path: fragment lists composited pixel by pixel, each fragment lit alone."""
+    return render(scene, RenderOptions(spans=False))
+
+
+FAST_CASES = [("oit", "zbuffer", False, "repeat"), ("oit", "zbuffer", False, "clamp"), ("oit", "painter", False, "repeat"),
+              ("oit", "zbuffer", True, "repeat"), ("depth_peeling", "zbuffer", False, "clamp"),
+              ("sorted", "zbuffer", False, "repeat")]
+
+
+@pytest.mark.parametrize("mode, hidden, cull, wrap", FAST_CASES, ids=["-".join(map(str, c)) for c in FAST_CASES])
+def test_the_fast_path_gives_the_bytes_of_the_plain_path(mode, hidden, cull, wrap):
+    """Fragments lit in runs and, for ``oit``, summed as they are drawn (no lists): the same
+    bytes as lists lit one fragment at a time and composited pixel by pixel."""
+    s = layered_scene(mode, hidden, cull, wrap)
+    fast = render(s)
+    assert fast.coverage.mean() > 0.5
+    np.testing.assert_array_equal(fast.rgb, plain(s).rgb)
+    np.testing.assert_array_equal(fast.coverage, plain(s).coverage)
+
+
+def test_the_layered_scene_has_what_it_claims():
+    """Many layers (at least twelve fragments on some pixel), coincident fragments (equal depths,
+    one after the other in a list), and fragments dropped behind the opaque quad."""
+    from renderer.pipeline import render_stages
+
+    s = layered_scene()
+    _, stages = render_stages(s)
+    tri = stages.tri_fixed[stages.translucent]
+    window = stages.tri_window[stages.translucent]
+    h, w = s.image.size[1], s.image.size[0]
+    _, everything = fragment_lists(tri, window, np.full((h, w), DEPTH_CLEAR, np.int32))
+    opaque = np.floor(stages.depth[::-1] * DEPTH_MAX + 0.5).astype(np.int32)  # window rows, as the kernels see them
+    _, cut = fragment_lists(tri, window, opaque)
+    assert everything.count.max() >= 12
+    assert cut.count.sum() < everything.count.sum()
+    layered = everything.start[everything.count > 1]
+    assert (everything.z[layered] == everything.z[layered + 1]).any()  # the coincident quads
+
+
+def test_one_thread_and_two_give_the_same_translucent_bytes():
+    s = layered_scene(size=(160, 120))
+    reference = render(s)
+    saved = numba.get_num_threads()
+    try:
+        numba.set_num_threads(1)
+        serial = render(s)
+    finally:
+        numba.set_num_threads(saved)
+    np.testing.assert_array_equal(serial.rgb, reference.rgb)
