@@ -25,6 +25,7 @@ from renderer.shading import to_8bit
 from renderer.workspace import Workspace
 
 from ..scene_strategies import any_scene
+from .single_thread import one_thread
 
 
 
@@ -197,12 +198,8 @@ def test_same_scene_same_bytes(scene, other):
     assert frame_bytes(render(scene)) == first
     render(other)
     assert frame_bytes(render(scene)) == first
-    threads = numba.get_num_threads()
-    numba.set_num_threads(1)
-    try:
+    with one_thread():
         assert frame_bytes(render(scene)) == first
-    finally:
-        numba.set_num_threads(threads)
 
 
 def test_there_are_threads_to_compare():

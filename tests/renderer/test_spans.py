@@ -7,7 +7,6 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-import numba
 import numpy as np
 import pytest
 
@@ -16,6 +15,7 @@ from lab.normals import radial_normals
 from lab.scene import Camera, Image, Light, Material, RenderSettings, Scene, SceneObject, headlight
 from lab.shapes import cube, icosphere, quad
 from renderer import RenderOptions, render
+from .single_thread import one_thread
 
 SCENE_LIGHT = Light(kind="scene", position=(3.0, 4.0, 5.0))
 LIGHTS = {
@@ -82,12 +82,8 @@ def test_spans_as_wide_as_the_image_keep_the_bytes():
 def test_one_thread_and_two_give_the_same_bytes():
     s = scene("phong", LIGHTS["two-lights"], size=(160, 120))
     reference = render(s)
-    saved = numba.get_num_threads()
-    try:
-        numba.set_num_threads(1)
+    with one_thread():
         serial = render(s)
-    finally:
-        numba.set_num_threads(saved)
     np.testing.assert_array_equal(serial.rgb, reference.rgb)
     np.testing.assert_array_equal(serial.depth, reference.depth)
 

@@ -7,7 +7,6 @@ Every expected value is worked out by hand below, in 8-bit steps where the mode 
 """
 from dataclasses import replace
 
-import numba
 import numpy as np
 import pytest
 
@@ -20,6 +19,7 @@ from renderer.raster import DEPTH_CLEAR, DEPTH_MAX
 from renderer.translucency import (DEPTH_PEELING, MODES, OIT, SORTED, blend8, composite_pixel, depth_order,
                                    fragment_lists, half, mul8)
 from renderer.window import SUBPIXEL
+from .single_thread import one_thread
 
 BLUE = (0, 0, 255)
 
@@ -282,10 +282,6 @@ def test_the_layered_scene_has_what_it_claims():
 def test_one_thread_and_two_give_the_same_translucent_bytes():
     s = layered_scene(size=(160, 120))
     reference = render(s)
-    saved = numba.get_num_threads()
-    try:
-        numba.set_num_threads(1)
+    with one_thread():
         serial = render(s)
-    finally:
-        numba.set_num_threads(saved)
     np.testing.assert_array_equal(serial.rgb, reference.rgb)
