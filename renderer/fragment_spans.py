@@ -31,12 +31,14 @@ from renderer.spans import span_setup
 
 
 @njit(cache=True, inline="always")
-def span_linear_colours(k, row, c0, count, frags, geo, inputs, colour):
+def span_linear_colours(k, row, c0, count, frags, geo, inputs, scratch):
     """The linear colours of clipped triangle ``k``'s pixels ``c0 … c0 + count − 1`` on
-    ``row`` into ``colour`` (3, ≥ count) float32 (see the module docstring). ``frags``: a
+    ``row`` into the colour of ``scratch`` (points (6, ≥ count), colour (3, ≥ count)
+    float32, :func:`renderer.shading.span_scratch`; see the module docstring). ``frags``: a
     :class:`renderer.shading.Fragments` whose ``plane`` is the triangles' set-up (its
     ``tri_index`` is not read); ``inputs``: ``(materials, textures, lights, lit)``."""
     materials, textures, lights, lit = inputs
+    points, colour = scratch
     s = frags.clip_source[k]
     o = geo.tri_object[s]
     path = materials.shading_path[o]
@@ -45,7 +47,7 @@ def span_linear_colours(k, row, c0, count, frags, geo, inputs, colour):
     if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
         consts = span_setup(k, row, c0, frags, geo, face)
         constant = face and not textured and span_normal_only(o, materials, lights)
-        span_colours(o, materials, lights, consts, face, 1 if constant else count, colour)
+        span_colours(o, materials, lights, consts, face, 1 if constant else count, points, colour)
         if textured:
             modulate_span(k, row, c0, count, frags, geo, textures, o, colour)
         if constant:

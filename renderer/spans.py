@@ -126,3 +126,13 @@ def span_pixel(consts, i, face):
     length = np.sqrt(nx * nx + ny * ny + nz * nz)
     scale = sign / length if length > F0 else sign
     return px, py, pz, nx * scale, ny * scale, nz * scale
+
+
+@njit(cache=True, inline="always")
+def span_points(consts, face, count, points):
+    """The span's first ``count`` pixels (:func:`span_pixel`) into ``points`` (6, ≥ count)
+    float32: rows x, y, z of the view-space position, then nx, ny, nz of the unit normal."""
+    for i in range(count):
+        px, py, pz, nx, ny, nz = span_pixel(consts, i, face)
+        points[0, i], points[1, i], points[2, i] = px, py, pz
+        points[3, i], points[4, i], points[5, i] = nx, ny, nz

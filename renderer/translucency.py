@@ -44,7 +44,7 @@ from renderer.jit import njit, prange
 from renderer.bands import first_row_of_band, raster_bands, shading_bands
 from renderer.fragment_spans import span_linear_colours
 from renderer.raster import DEPTH_CLEAR, FILL_RULES, pixel_depth, row_depth, row_span, set_up
-from renderer.shading import Fragments, ShadingInputs, unorm8
+from renderer.shading import Fragments, ShadingInputs, span_scratch, unorm8
 from renderer.workspace import empty
 
 OIT, DEPTH_PEELING, SORTED = 0, 1, 2
@@ -367,7 +367,8 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
     n_strips = (height + STRIP_ROWS - 1) // STRIP_ROWS
     for b in prange(n_bands):
         inputs = (materials, textures, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
-        colour = np.empty((3, max(width, 1)), np.float32)  # a run's linear colours
+        scratch = span_scratch(width)  # a run's points and linear colours
+        colour = scratch[1]
         behind = np.empty(3, np.int64)
         out = np.empty(3, np.int64)
         for strip in range(b, n_strips, n_bands):
@@ -391,7 +392,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                         if col == c0:  # behind the opaque surface
                             col += 1
                             continue
-                        span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, colour)
+                        span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, scratch)
                         if fill:
                             for i in range(col - c0):
                                 j = start[row, c0 + i] + seen[row, c0 + i]

@@ -6,30 +6,68 @@ centre). Shading reads tables of the triangles' corners, weights and set-up: mad
 winners only, they stay as long as the image has pixels, however many triangles the
 scene has. The winners keep their draw order, so a pixel's triangle number changes but
 not which triangle it is, nor which pixels show the same one.
+
+Three passes (:func:`visible_triangles`): mark every triangle some pixel shows (rows in
+parallel; two threads may both write 1 for the same triangle, the same value), number the
+marked ones in draw order (one pass over the triangles), then rewrite the pixels (rows in
+parallel). With numpy's masks and fancy indexing instead, a 1024² frame of a 328k-triangle
+sphere spent 7.8 ms here.
 """
 from __future__ import annotations
 
 import numpy as np
 
+from renderer.jit import njit, prange
 from renderer.raster import EMPTY
 from renderer.workspace import empty
 
 
+@njit(cache=True, parallel=True)
+def mark_shown(tri_index, number):
+    """``number[k] = 1`` for every triangle ``k`` that a pixel of ``tri_index`` (H, W) shows."""
+    for row in prange(tri_index.shape[0]):
+        for col in range(tri_index.shape[1]):
+            k = tri_index[row, col]
+            if k != EMPTY:
+                number[k] = 1
+
+
+@njit(cache=True)
+def number_marked(number, ids):
+    """The marked triangles (``number[k]`` = 1) numbered 0, 1, … in draw order, in place,
+    and listed in ``ids`` (as long as ``number``); returns how many."""
+    count = 0
+    for k in range(number.shape[0]):
+        if number[k]:
+            number[k] = count
+            ids[count] = k
+            count += 1
+    return count
+
+
+@njit(cache=True, parallel=True)
+def renumber_pixels(tri_index, number):
+    """Every covered pixel of ``tri_index`` rewritten as its triangle's number."""
+    for row in prange(tri_index.shape[0]):
+        for col in range(tri_index.shape[1]):
+            k = tri_index[row, col]
+            if k != EMPTY:
+                tri_index[row, col] = number[k]
+
+
 def visible_triangles(tri_index: np.ndarray, count: int, ws=None) -> np.ndarray:
     """The triangles (of ``count``) that some pixel of ``tri_index`` (H, W) int32 shows, in
-    draw order, as an index array (V,); ``tri_index`` is renumbered in place to count them
-    0 … V − 1 (:data:`renderer.raster.EMPTY` stays where no triangle is).
+    draw order, as an index array (V,) int64; ``tri_index`` is renumbered in place to count
+    them 0 … V − 1 (:data:`renderer.raster.EMPTY` stays where no triangle is).
 
     >>> tri_index = np.array([[7, -1], [2, 7]], np.int32)
     >>> visible_triangles(tri_index, 9).tolist(), tri_index.tolist()
     ([2, 7], [[1, -1], [0, 1]])
     """
-    covered = tri_index != EMPTY
-    shown = tri_index[covered]
     number = empty(ws, "scratch.per_triangle", count, np.int64)  # shared with the clipper's offsets
     number[:] = 0
-    number[shown] = 1
-    ids = np.flatnonzero(number)
-    number[ids] = np.arange(len(ids))
-    tri_index[covered] = number[shown]
-    return ids
+    mark_shown(tri_index, number)
+    ids = np.empty(count, np.int64)
+    shown = number_marked(number, ids)
+    renumber_pixels(tri_index, number)
+    return ids[:shown].copy()  # not a view of the (count,) buffer

@@ -23,8 +23,8 @@ from renderer.reflection.classic_model import classic_lighting
 from renderer.reflection.materials import Materials
 from renderer.reflection.opengl_model import opengl_lighting
 from renderer.reflection.vtk_model import vtk_lighting
-from renderer.reflection.vtk_spans import (store8, vtk_normal_only, vtk_span, vtk_span_applies, vtk_span_colours,
-                                          vtk_spans_apply)
+from renderer.reflection.vtk_spans import (store8, vtk_normal_only, vtk_point_colours, vtk_span, vtk_span_applies,
+                                          vtk_span_colours, vtk_spans_apply)
 
 REFLECTION_MODELS = {m.name: m for m in (vtk_model.MODEL, opengl_model.MODEL, classic_model.MODEL)}
 """Model name (the scene's ``model``) → its :class:`~renderer.reflection.materials.ReflectionModel`."""
@@ -68,19 +68,28 @@ def span_normal_only(o, materials, lights):
 
 
 @njit(cache=True, inline="always")
-def reflect_span(o, materials, lights, consts, face, count, colour, out):
+def reflect_span(o, materials, lights, consts, face, count, points, colour, out):
     """The span kernel of object ``o``'s model (only where :func:`span_applies`): the
     span's ``count`` pixels lit and stored as 8 bits into ``out`` (count, 3); ``consts``
-    and ``face`` from :func:`renderer.spans.span_setup`; ``colour`` (3, ≥ count) float32 scratch."""
-    vtk_span(o, materials, lights, consts, face, count, colour, out)
+    and ``face`` from :func:`renderer.spans.span_setup`; ``points`` (6, ≥ count) and
+    ``colour`` (3, ≥ count) float32 scratch."""
+    vtk_span(o, materials, lights, consts, face, count, points, colour, out)
 
 
 @njit(cache=True, inline="always")
-def span_colours(o, materials, lights, consts, face, count, colour):
+def span_colours(o, materials, lights, consts, face, count, points, colour):
     """The span kernel without the store: the span's ``count`` linear colours into
     ``colour`` (3, ≥ count) float32 (for a texture to modulate before
-    :func:`store_span` stores them)."""
-    vtk_span_colours(o, materials, lights, consts, face, count, colour)
+    :func:`store_span` stores them); ``points`` (6, ≥ count) float32 scratch."""
+    vtk_span_colours(o, materials, lights, consts, face, count, points, colour)
+
+
+@njit(cache=True, inline="always")
+def light_points(o, materials, lights, points, count, colour):
+    """Object ``o``'s model (only where :func:`span_applies`) at ``count`` points already
+    interpolated (``points`` (6, ≥ count) float32, :func:`renderer.spans.span_points`):
+    their linear colours into ``colour`` (3, ≥ count) float32."""
+    vtk_point_colours(o, materials, lights, points, count, colour)
 
 
 @njit(cache=True, inline="always")

@@ -1,9 +1,12 @@
-"""The ``vtk`` reflection model over a span of pixels, in float32, one loop LLVM vectorises.
+"""The ``vtk`` reflection model over a run of pixels, in float32, one loop LLVM vectorises.
 
 The same formulas as :func:`renderer.reflection.vtk_model.vtk_lighting`, computed as VTK's
-fragment shader computes them — in float32 — fused with the interpolation before them and
-the 8-bit store after them into one loop over the span's pixels (:mod:`renderer.spans`):
-no calls, no early exits; ``pow`` is :func:`renderer.float32_math.pow_f32`
+fragment shader computes them — in float32 — over a run of points: each pixel's view-space
+position and normal, interpolated first (:func:`renderer.spans.span_points`), then lit in
+one loop without calls or early exits (:func:`vtk_light_kernel`), then stored as 8 bits.
+The run is a triangle's span, or a row's run of pixels of one object whatever triangles
+they show (:func:`renderer.shading.shade_lit_run`): thin triangles, one or two pixels a
+row, then still light 8 pixels at a time (a loop over one pixel runs scalar code); ``pow`` is :func:`renderer.float32_math.pow_f32`
 (``exp2(p·log2 x)``, as llvmpipe evaluates it). Covers light complexities 0–2 (unlit, a
 lone headlight, directional lights; one directional light has a loop of its own, with no
 inner loop over lights, so it vectorises); a set with a positional light (complexity 3) is
@@ -16,7 +19,7 @@ import numpy as np
 from renderer.float32_math import pow_f32
 from renderer.jit import njit
 from renderer.lights import DIRECTIONAL, HEADLIGHT_ONLY, UNLIT
-from renderer.spans import span_pixel
+from renderer.spans import span_points
 
 F0, F1, F2, F255 = np.float32(0.0), np.float32(1.0), np.float32(2.0), np.float32(255.0)
 HEADLIGHT_FLOOR = np.float32(1e-6)
@@ -83,20 +86,32 @@ def _view_vector(px, py, pz):
 
 
 @njit(cache=True, inline="always")
-def vtk_span(o, materials, lights, consts, face, count, colour, out):
+def vtk_span(o, materials, lights, consts, face, count, points, colour, out):
     """VTK's colour of object ``o`` at the span's ``count`` pixels, stored as 8 bits into
     ``out`` (count, 3): :func:`vtk_span_colours`, then :func:`store8` (an 8-bit store in
     the lighting loop kept it from vectorising, 70 ns a pixel instead of 6)."""
-    vtk_span_colours(o, materials, lights, consts, face, count, colour)
+    vtk_span_colours(o, materials, lights, consts, face, count, points, colour)
     store8(colour, count, out)
 
 
 @njit(cache=True, inline="always")
-def vtk_span_colours(o, materials, lights, consts, face, count, colour):
+def vtk_span_colours(o, materials, lights, consts, face, count, points, colour):
     """VTK's linear colour of object ``o`` at the span's ``count`` pixels, into ``colour``
-    (3, ≥ count) float32. ``consts`` and ``face``: the span's set-up
-    (:func:`renderer.spans.span_setup`). Complexities 0–2 only (:func:`vtk_span_applies`).
-    The loops live in :func:`vtk_span_kernel`, compiled once with plain arguments: inlined
+    (3, ≥ count) float32: the span's points interpolated into ``points`` (6, ≥ count)
+    (:func:`renderer.spans.span_points`; ``consts`` and ``face`` its set-up,
+    :func:`renderer.spans.span_setup`), then lit (:func:`vtk_point_colours`)."""
+    span_points(consts, face, count, points)
+    vtk_point_colours(o, materials, lights, points, count, colour)
+
+
+@njit(cache=True, inline="always")
+def vtk_point_colours(o, materials, lights, points, count, colour):
+    """VTK's linear colour of object ``o`` at ``count`` points into ``colour`` (3, ≥ count)
+    float32. ``points`` (6, ≥ count) float32: view-space position and unit normal of each
+    (rows x, y, z, nx, ny, nz), on the viewer's side; they may come from many triangles
+    (a row's run of one object, :func:`renderer.shading.shade_lit_run`), so the loop is as
+    long as the run, not as a triangle's span. Complexities 0–2 only (:func:`vtk_span_applies`).
+    The loops live in :func:`vtk_light_kernel`, compiled once with plain arguments: inlined
     at its call site with the kernel inputs' named tuples, numba took 16 s more to compile
     the shading kernel."""
     amb, dif, spe = materials.ambient[o], materials.diffuse[o], materials.specular[o]
@@ -104,13 +119,13 @@ def vtk_span_colours(o, materials, lights, consts, face, count, colour):
                 np.float32(dif[2]), np.float32(spe[0]), np.float32(spe[1]), np.float32(spe[2]),
                 np.float32(materials.power[o]))
     shiny = spe[0] != 0.0 or spe[1] != 0.0 or spe[2] != 0.0  # else Ks·Cs·sf is 0 whatever sf
-    vtk_span_kernel(vtk_complexity(o, materials, lights), shiny, material, (amb[0] + dif[0], amb[1] + dif[1],
-                    amb[2] + dif[2]), lights.direction, lights.intensity_rgb, consts, face, count, colour)
+    vtk_light_kernel(vtk_complexity(o, materials, lights), shiny, material, (amb[0] + dif[0], amb[1] + dif[1],
+                     amb[2] + dif[2]), lights.direction, lights.intensity_rgb, points, count, colour)
 
 
 @njit(cache=True)
-def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts, face, count, colour):
-    """The loops of :func:`vtk_span_colours`: ``material`` (Amb, Dif, Spe as float32 RGB, then the
+def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, points, count, colour):
+    """The loops of :func:`vtk_point_colours`: ``material`` (Amb, Dif, Spe as float32 RGB, then the
     specular power), ``unlit`` Amb + Dif in float64, the lights' directions and colours."""
     a0, a1, a2, d0, d1, d2, s0, s1, s2, power = material
     if complexity == UNLIT:
@@ -121,8 +136,7 @@ def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts
     if complexity == HEADLIGHT_ONLY:
         c0, c1, c2 = np.float32(l_col[0, 0]), np.float32(l_col[0, 1]), np.float32(l_col[0, 2])
         for i in range(count):
-            _, _, _, nx, ny, nz = span_pixel(consts, i, face)
-            df = max(HEADLIGHT_FLOOR, nz)
+            df = max(HEADLIGHT_FLOOR, points[5, i])
             sf = pow_f32(df, power) if shiny else F0
             colour[0, i] = a0 + df * d0 * c0 + sf * s0 * c0
             colour[1, i] = a1 + df * d1 * c1 + sf * s1 * c1
@@ -133,9 +147,8 @@ def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts
                       np.float32(direction[0, 2]))  # VTK's l: the direction the light travels
         c0, c1, c2 = np.float32(l_col[0, 0]), np.float32(l_col[0, 1]), np.float32(l_col[0, 2])
         for i in range(count):
-            px, py, pz, nx, ny, nz = span_pixel(consts, i, face)
-            vx, vy, vz = _view_vector(px, py, pz)
-            ndl, rdv = _reflect_dot(lx, ly, lz, nx, ny, nz, vx, vy, vz)
+            vx, vy, vz = _view_vector(points[0, i], points[1, i], points[2, i])
+            ndl, rdv = _reflect_dot(lx, ly, lz, points[3, i], points[4, i], points[5, i], vx, vy, vz)
             df = max(F0, -ndl)
             sf = pow_f32(max(SPECULAR_FLOOR, rdv), power) if shiny else F0
             sf = sf if df > F0 else F0
@@ -144,8 +157,8 @@ def vtk_span_kernel(complexity, shiny, material, unlit, direction, l_col, consts
             colour[2, i] = a2 + d2 * (df * c2) + s2 * (sf * c2)
         return
     for i in range(count):
-        px, py, pz, nx, ny, nz = span_pixel(consts, i, face)
-        vx, vy, vz = _view_vector(px, py, pz)
+        nx, ny, nz = points[3, i], points[4, i], points[5, i]
+        vx, vy, vz = _view_vector(points[0, i], points[1, i], points[2, i])
         sd0 = sd1 = sd2 = ss0 = ss1 = ss2 = F0  # Σ df·Lc, Σ sf·Lc
         for li in range(l_col.shape[0]):
             lx, ly, lz = (np.float32(direction[li, 0]), np.float32(direction[li, 1]),

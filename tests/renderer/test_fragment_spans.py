@@ -65,10 +65,10 @@ def colours_of_runs(path, lights, model="vtk", texture=(None, "repeat"), run=RUN
     inputs = (materials((0.1, 0.15, 0.2), (0.6, 0.5, 0.4), (0.5, 0.5, 0.5), 20.0, model=model, path=path),
               textures(*texture), lights, lit)
     out = np.empty((32, 3, 2 * RUN), np.float32)
-    colour = np.empty((3, RUN), np.float32)
+    points, colour = np.empty((6, RUN), np.float32), np.empty((3, RUN), np.float32)
     for row in range(32):
         for c0 in range(0, 2 * RUN, run):
-            span_linear_colours(0, row, c0, run, frags, geo, inputs, colour)
+            span_linear_colours(0, row, c0, run, frags, geo, inputs, (points, colour))
             out[row, :, c0:c0 + run] = colour[:, :run]
     return out, (frags, geo, inputs)
 
