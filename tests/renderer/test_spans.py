@@ -13,7 +13,8 @@ import pytest
 from lab.matrices import model_matrix
 from lab.normals import radial_normals
 from lab.scene import Camera, Image, Light, Material, RenderSettings, Scene, SceneObject, headlight
-from lab.shapes import cube, icosphere, quad
+from lab.normals import angle_weighted_normals
+from lab.shapes import cube, cylinder, icosphere, quad
 from renderer import RenderOptions, render
 from .single_thread import one_thread
 
@@ -77,6 +78,34 @@ def test_spans_as_wide_as_the_image_keep_the_bytes():
     fast = render(s)
     assert fast.coverage.all()
     np.testing.assert_array_equal(fast.rgb, render(s, RenderOptions(spans=False)).rgb)
+
+
+def thin_and_mixed():
+    """Objects of every span way side by side on the same rows: a 400-segment cylinder (phong:
+    triangles one or two pixels wide, so a row's run of it crosses many triangles), a flat
+    sphere in front of it (the colour held per triangle, or lit once a span under a lone
+    headlight, or lit per pixel), a gouraud sphere behind (its run meets the cylinder's)."""
+    tube = cylinder(segments=400, radius=0.6, height=2.0)
+    tube = replace(tube, point_normals=angle_weighted_normals(tube))
+    return (SceneObject(mesh=tube, material=Material(color=(0.7, 0.7, 0.8), specular=0.5, specular_power=40.0),
+                        shading="phong", model_to_world=model_matrix(rotate=(75.0, 0.0, 8.0))),
+            SceneObject(mesh=ball(2), material=Material(color=(0.9, 0.4, 0.3), specular=0.3), shading="flat",
+                        model_to_world=model_matrix(scale=(0.35, 0.35, 0.35), translate=(0.3, 0.2, 0.9))),
+            SceneObject(mesh=ball(3), material=Material(color=(0.3, 0.8, 0.5), specular=0.3), shading="gouraud",
+                        model_to_world=model_matrix(scale=(0.7, 0.7, 0.7), translate=(-0.9, -0.2, -0.5))))
+
+
+@pytest.mark.parametrize("light", ["headlight", "one-scene-light", "two-lights", "unlit"])
+def test_runs_across_thin_triangles_and_other_objects_keep_the_bytes(light):
+    """A row's run of one object is lit in one loop (``shade_lit_run``) whatever triangles it
+    crosses, and ends where another object or the background begins: the same bytes as
+    pixel by pixel, with one thread and with two."""
+    s = scene("phong", LIGHTS[light], size=(120, 90), objects=thin_and_mixed(),
+              camera=Camera(position=(0.2, 0.6, 3.4), view_angle=45.0, clipping_range=(0.5, 30.0)))
+    fast = render(s)
+    np.testing.assert_array_equal(fast.rgb, render(s, RenderOptions(spans=False)).rgb)
+    with one_thread():
+        np.testing.assert_array_equal(render(s).rgb, fast.rgb)
 
 
 def test_one_thread_and_two_give_the_same_bytes():
