@@ -308,7 +308,7 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start, width = col, frags.tri_index.shape[1]
     while True:
-        span_points(span_setup(k, row, col, frags, geo, face), face, end - col, points[:, col:end])
+        span_points(span_setup(k, row, col, frags, geo, face), face, end - col, points, col)
         col = end
         if col == width:
             break
@@ -316,7 +316,7 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
         if k == EMPTY or object_of(k, frags, geo) != o:
             break
         end = span_end(frags.tri_index, row, col, True)
-    light_points(o, materials, lights, points[:, start:col], col - start, colour)
+    light_points(o, materials, lights, points, start, col - start, colour)
     store_span(colour, col - start, rgb[row, start:col])
     return col
 

@@ -129,10 +129,12 @@ def span_pixel(consts, i, face):
 
 
 @njit(cache=True, inline="always")
-def span_points(consts, face, count, points):
-    """The span's first ``count`` pixels (:func:`span_pixel`) into ``points`` (6, ≥ count)
-    float32: rows x, y, z of the view-space position, then nx, ny, nz of the unit normal."""
+def span_points(consts, face, count, points, at):
+    """The span's first ``count`` pixels (:func:`span_pixel`) into columns ``at`` … ``at +
+    count − 1`` of ``points`` (6, W) float32: rows x, y, z of the view-space position, then
+    nx, ny, nz of the unit normal. (Whole rows and an offset, not a slice of columns: numba
+    reads a slice of columns through its strides, and the loops then do not vectorise.)"""
     for i in range(count):
         px, py, pz, nx, ny, nz = span_pixel(consts, i, face)
-        points[0, i], points[1, i], points[2, i] = px, py, pz
-        points[3, i], points[4, i], points[5, i] = nx, ny, nz
+        points[0, at + i], points[1, at + i], points[2, at + i] = px, py, pz
+        points[3, at + i], points[4, at + i], points[5, at + i] = nx, ny, nz

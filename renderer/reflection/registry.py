@@ -85,11 +85,11 @@ def span_colours(o, materials, lights, consts, face, count, points, colour):
 
 
 @njit(cache=True, inline="always")
-def light_points(o, materials, lights, points, count, colour):
+def light_points(o, materials, lights, points, first, count, colour):
     """Object ``o``'s model (only where :func:`span_applies`) at ``count`` points already
-    interpolated (``points`` (6, ≥ count) float32, :func:`renderer.spans.span_points`):
-    their linear colours into ``colour`` (3, ≥ count) float32."""
-    vtk_point_colours(o, materials, lights, points, count, colour)
+    interpolated (columns ``first`` … of ``points`` (6, W) float32,
+    :func:`renderer.spans.span_points`): their linear colours into ``colour`` (3, ≥ count) float32."""
+    vtk_point_colours(o, materials, lights, points, first, count, colour)
 
 
 @njit(cache=True, inline="always")

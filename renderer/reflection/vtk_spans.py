@@ -100,15 +100,15 @@ def vtk_span_colours(o, materials, lights, consts, face, count, points, colour):
     (3, ≥ count) float32: the span's points interpolated into ``points`` (6, ≥ count)
     (:func:`renderer.spans.span_points`; ``consts`` and ``face`` its set-up,
     :func:`renderer.spans.span_setup`), then lit (:func:`vtk_point_colours`)."""
-    span_points(consts, face, count, points)
-    vtk_point_colours(o, materials, lights, points, count, colour)
+    span_points(consts, face, count, points, 0)
+    vtk_point_colours(o, materials, lights, points, 0, count, colour)
 
 
 @njit(cache=True, inline="always")
-def vtk_point_colours(o, materials, lights, points, count, colour):
+def vtk_point_colours(o, materials, lights, points, first, count, colour):
     """VTK's linear colour of object ``o`` at ``count`` points into ``colour`` (3, ≥ count)
-    float32. ``points`` (6, ≥ count) float32: view-space position and unit normal of each
-    (rows x, y, z, nx, ny, nz), on the viewer's side; they may come from many triangles
+    float32. ``points`` (6, W) float32, columns ``first`` … ``first + count − 1``: view-space
+    position and unit normal of each (rows x, y, z, nx, ny, nz), on the viewer's side; they may come from many triangles
     (a row's run of one object, :func:`renderer.shading.shade_lit_run`), so the loop is as
     long as the run, not as a triangle's span. Complexities 0–2 only (:func:`vtk_span_applies`).
     The loops live in :func:`vtk_light_kernel`, compiled once with plain arguments: inlined
@@ -120,11 +120,11 @@ def vtk_point_colours(o, materials, lights, points, count, colour):
                 np.float32(materials.power[o]))
     shiny = spe[0] != 0.0 or spe[1] != 0.0 or spe[2] != 0.0  # else Ks·Cs·sf is 0 whatever sf
     vtk_light_kernel(vtk_complexity(o, materials, lights), shiny, material, (amb[0] + dif[0], amb[1] + dif[1],
-                     amb[2] + dif[2]), lights.direction, lights.intensity_rgb, points, count, colour)
+                     amb[2] + dif[2]), lights.direction, lights.intensity_rgb, points, first, count, colour)
 
 
 @njit(cache=True)
-def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, points, count, colour):
+def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, points, first, count, colour):
     """The loops of :func:`vtk_point_colours`: ``material`` (Amb, Dif, Spe as float32 RGB, then the
     specular power), ``unlit`` Amb + Dif in float64, the lights' directions and colours."""
     a0, a1, a2, d0, d1, d2, s0, s1, s2, power = material
@@ -136,7 +136,7 @@ def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, point
     if complexity == HEADLIGHT_ONLY:
         c0, c1, c2 = np.float32(l_col[0, 0]), np.float32(l_col[0, 1]), np.float32(l_col[0, 2])
         for i in range(count):
-            df = max(HEADLIGHT_FLOOR, points[5, i])
+            df = max(HEADLIGHT_FLOOR, points[5, first + i])
             sf = pow_f32(df, power) if shiny else F0
             colour[0, i] = a0 + df * d0 * c0 + sf * s0 * c0
             colour[1, i] = a1 + df * d1 * c1 + sf * s1 * c1
@@ -147,8 +147,9 @@ def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, point
                       np.float32(direction[0, 2]))  # VTK's l: the direction the light travels
         c0, c1, c2 = np.float32(l_col[0, 0]), np.float32(l_col[0, 1]), np.float32(l_col[0, 2])
         for i in range(count):
-            vx, vy, vz = _view_vector(points[0, i], points[1, i], points[2, i])
-            ndl, rdv = _reflect_dot(lx, ly, lz, points[3, i], points[4, i], points[5, i], vx, vy, vz)
+            j = first + i
+            vx, vy, vz = _view_vector(points[0, j], points[1, j], points[2, j])
+            ndl, rdv = _reflect_dot(lx, ly, lz, points[3, j], points[4, j], points[5, j], vx, vy, vz)
             df = max(F0, -ndl)
             sf = pow_f32(max(SPECULAR_FLOOR, rdv), power) if shiny else F0
             sf = sf if df > F0 else F0
@@ -157,8 +158,9 @@ def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, point
             colour[2, i] = a2 + d2 * (df * c2) + s2 * (sf * c2)
         return
     for i in range(count):
-        nx, ny, nz = points[3, i], points[4, i], points[5, i]
-        vx, vy, vz = _view_vector(points[0, i], points[1, i], points[2, i])
+        j = first + i
+        nx, ny, nz = points[3, j], points[4, j], points[5, j]
+        vx, vy, vz = _view_vector(points[0, j], points[1, j], points[2, j])
         sd0 = sd1 = sd2 = ss0 = ss1 = ss2 = F0  # Σ df·Lc, Σ sf·Lc
         for li in range(l_col.shape[0]):
             lx, ly, lz = (np.float32(direction[li, 0]), np.float32(direction[li, 1]),
