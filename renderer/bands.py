@@ -12,6 +12,12 @@ number of bands never changes a byte: a test renders with one band and with many
 How many bands pay depends on the loop: the scan-conversion loops walk every triangle once
 per band (:func:`raster_bands`: two per thread), shading has no such cost
 (:data:`SHADING_BANDS`).
+
+The opaque raster deals **blocks** of :data:`BLOCK_ROWS` rows instead of single rows
+(:func:`first_block_of_band`): a small triangle then lies in one band, which reads its
+set-up once, and the others pass over it. Dealt row by row, each of the four bands of two
+threads set up nearly every triangle of a 672k-triangle Menger sponge again (measured, one
+thread: 147 ms a frame with one band, 156 with two, 182 with four).
 """
 from __future__ import annotations
 
@@ -34,6 +40,19 @@ def raster_bands(height: int, n_bands: int | None = None) -> int:
 def shading_bands(height: int) -> int:
     """Bands for a shading loop over ``height`` rows: :data:`SHADING_BANDS`, at most one per row."""
     return max(1, min(height, SHADING_BANDS))
+
+
+BLOCK_ROWS = 16
+"""Rows in a block of the opaque raster's bands: block j holds rows 16j … 16j + 15 and
+belongs to band j mod n_bands."""
+
+
+@njit(cache=True, inline="always")
+def first_block_of_band(lo, band, n_bands):
+    """The first block (of :data:`BLOCK_ROWS` rows) that ``band`` owns among the blocks from
+    the one holding row ``lo`` on (block j belongs to band j mod n_bands)."""
+    first = lo // BLOCK_ROWS
+    return first + (band - first) % n_bands
 
 
 @njit(cache=True, inline="always")

@@ -34,7 +34,7 @@ from typing import Callable, NamedTuple
 import numpy as np
 from renderer.jit import njit, prange
 
-from renderer.bands import first_row_of_band, raster_bands
+from renderer.bands import BLOCK_ROWS, first_block_of_band, raster_bands
 from renderer.window import SUBPIXEL
 from renderer.workspace import empty
 
@@ -255,9 +255,10 @@ def fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index):
 def rasterize(setup, n_bands, rule, depth_test, first_index, clear, depth, tri_index):
     """Scan-convert every triangle of ``setup`` into the visibility buffer (the loop kernel).
 
-    The image's rows are dealt out to ``n_bands`` bands (:mod:`renderer.bands`), filled in
-    parallel; each band draws *every* triangle in order, on its own rows only (after
-    clearing them, with ``clear``). A pixel belongs to one band and sees the triangles in
+    The image's rows are dealt out to ``n_bands`` bands in blocks of
+    :data:`renderer.bands.BLOCK_ROWS` rows (:mod:`renderer.bands`), filled in parallel; each
+    band draws *every* triangle in order, on its own rows only (after clearing them, with
+    ``clear``). A pixel belongs to one band and sees the triangles in
     draw order, so the result is the same, bit for bit, as a serial loop (z-buffer ties
     included). ``depth_test`` False draws every fragment over what is there (the painter's
     algorithm, or no hidden-surface removal at all): then the last triangle drawn wins.
@@ -272,13 +273,18 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, clear, depth, tri_i
     height, width = depth.shape
     for b in prange(n_bands):
         if clear:
-            for row in range(b, height, n_bands):
-                for col in range(width):
-                    depth[row, col] = DEPTH_CLEAR
-                    tri_index[row, col] = EMPTY
+            for block in range(b, (height + BLOCK_ROWS - 1) // BLOCK_ROWS, n_bands):
+                for row in range(block * BLOCK_ROWS, min(block * BLOCK_ROWS + BLOCK_ROWS, height)):
+                    for col in range(width):
+                        depth[row, col] = DEPTH_CLEAR
+                        tri_index[row, col] = EMPTY
         for k in range(setup.ccw.shape[0]):
-            for row in range(first_row_of_band(setup.rows[k, 0], b, n_bands), setup.rows[k, 1] + 1, n_bands):
-                fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index)
+            lo, hi = setup.rows[k, 0], setup.rows[k, 1]
+            block = first_block_of_band(lo, b, n_bands)
+            while block * BLOCK_ROWS <= hi:  # none when lo > hi (nothing to draw)
+                for row in range(max(lo, block * BLOCK_ROWS), min(hi, block * BLOCK_ROWS + BLOCK_ROWS - 1) + 1):
+                    fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index)
+                block += n_bands
 
 
 @njit(cache=True, parallel=True)

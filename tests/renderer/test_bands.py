@@ -1,8 +1,9 @@
-"""Rows dealt like cards: which rows a band owns, and how many bands a loop uses."""
+"""Rows dealt like cards: which rows a band owns (one by one, or in blocks for the opaque raster),
+and how many bands a loop uses."""
 import numba
 import pytest
 
-from renderer.bands import SHADING_BANDS, first_row_of_band, raster_bands, shading_bands
+from renderer.bands import BLOCK_ROWS, SHADING_BANDS, first_block_of_band, first_row_of_band, raster_bands, shading_bands
 
 
 @pytest.mark.parametrize("lo, band, n_bands, first", [(0, 0, 4, 0), (0, 3, 4, 3), (5, 2, 4, 6), (5, 1, 4, 5),
@@ -27,3 +28,20 @@ def test_raster_bands_default_to_two_per_thread_and_never_exceed_the_rows():
 def test_shading_bands_are_many_but_at_most_one_per_row():
     assert shading_bands(1000) == SHADING_BANDS == 64
     assert shading_bands(5) == 5 and shading_bands(0) == 1
+
+
+@pytest.mark.parametrize("lo, hi, n_bands", [(0, 200, 4), (37, 38, 4), (15, 16, 3), (100, 400, 7), (5, 5, 1)])
+def test_blocks_give_every_row_to_exactly_one_band_and_a_small_triangle_to_one(lo, hi, n_bands):
+    """Rows lo..hi walked as the raster walks them (each band from its first block, every
+    n_bands-th block): each row once, in blocks of 16 rows, block j to band j mod n."""
+    owner = {}
+    for band in range(n_bands):
+        block = first_block_of_band(lo, band, n_bands)
+        assert block % n_bands == band and lo // BLOCK_ROWS <= block < lo // BLOCK_ROWS + n_bands
+        while block * BLOCK_ROWS <= hi:
+            for row in range(max(lo, block * BLOCK_ROWS), min(hi, block * BLOCK_ROWS + BLOCK_ROWS - 1) + 1):
+                assert row not in owner
+                owner[row] = band
+            block += n_bands
+    assert sorted(owner) == list(range(lo, hi + 1))
+    assert all(owner[r] == (r // BLOCK_ROWS) % n_bands for r in owner)
