@@ -105,7 +105,7 @@ def clip_polygon(poly, bary, n, plane, out_poly, out_bary):
 def clip_one(verts_clip, triangles, t, poly, bary, tmp_poly, tmp_bary):
     """Sutherland–Hodgman on triangle ``t`` against all six planes: the vertex count of the
     clipped polygon (< 3: nothing left), its vertices in ``poly`` and weights in ``bary``."""
-    n = 3
+    n = np.int64(3)  # not the literal 3: clip_polygon would be compiled for it and again for int64
     for v in range(3):
         for c in range(4):
             poly[v, c] = verts_clip[triangles[t, v], c]
@@ -192,7 +192,8 @@ def count_pieces(verts_clip, triangles, codes, trivial, counts, cut):
             counts[t], cut[t] = 1, False
         else:
             poly, bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
-            n = clip_one(verts_clip, triangles, t, poly, bary, np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3)))
+            n = clip_one(verts_clip, triangles, np.int64(t), poly, bary, np.empty((MAX_POLY, 4)),
+                         np.empty((MAX_POLY, 3)))  # int64 as in write_pieces: one compiled clip_one, not two
             counts[t], cut[t] = max(n - 2, 0), n >= 3
 
 
@@ -225,23 +226,23 @@ def write_pieces(verts_clip, triangles, cut_ids, offsets, piece_offsets, source,
             p += 1
 
 
-@njit(cache=True)
+@njit(cache=True, parallel=True)
 def corner_rows(source, piece, triangles, n_vertices, rows):
     """The rows of each triangle's corners into ``rows`` (K, 3), in a table that holds the
     ``n_vertices`` source vertices first and then the pieces' corners, three per piece (as
     :func:`renderer.pipeline.clip_and_map` lays out the window-space table)."""
-    for k in range(source.shape[0]):
+    for k in prange(source.shape[0]):
         p = piece[k]
         for v in range(3):
             rows[k, v] = triangles[source[k], v] if p < 0 else n_vertices + 3 * p + v
 
 
-@njit(cache=True)
+@njit(cache=True, parallel=True)
 def gather_corners(verts_clip, triangles, source, piece, piece_clip, piece_bary, out_clip, out_bary):
     """Each triangle's clip-space corners and their weights, written out into ``out_clip``
     (K, 3, 4) and ``out_bary`` (K, 3, 3): a source triangle's vertices with unit weights, or
     its piece's rows."""
-    for k in range(source.shape[0]):
+    for k in prange(source.shape[0]):
         p = piece[k]
         for v in range(3):
             if p < 0:

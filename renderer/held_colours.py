@@ -13,10 +13,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from renderer.jit import njit, prange
+from renderer.jit import njit
 from renderer.reflection.materials import PIXEL_FACE_NORMAL
 from renderer.reflection.registry import light_points, span_normal_only, store_span
-from renderer.spans import face_toward_viewer
+from renderer.spans import F0, face_toward_viewer
+from renderer.workspace import empty
 
 
 @njit(cache=True, inline="always")
@@ -26,33 +27,45 @@ def held_per_triangle(o, materials, lights):
     return materials.shading_path[o] == PIXEL_FACE_NORMAL and span_normal_only(o, materials, lights)
 
 
-@njit(cache=True, parallel=True)
-def held_colours(frags, geo, materials, lights, out):
+@njit(cache=True)
+def held_colours(frags, geo, materials, lights, points, colour, stored, out):
     """The 8-bit colour of every clipped triangle of ``frags`` whose object is
     :func:`held_per_triangle` into ``out`` (K, 3) uint8 (other rows are left as they are):
     its plane normal turned toward the viewer, as float32 (the normal
     :func:`renderer.spans.span_pixel` gives every pixel of a flat triangle), lit by the
-    object's span kernel (:func:`renderer.reflection.registry.light_points`) and stored as
-    8 bits. The position is not needed (the colour depends on the normal alone) and is 0."""
+    object's span kernel and stored as 8 bits. An object's triangles are lit together, as
+    one run of points (``points`` (6, ≥ K), ``colour`` (3, ≥ K) float32 and ``stored`` (≥ K, 3)
+    uint8 scratch): one call,
+    whose loop runs 8 triangles at a time. The positions are not needed (the colour depends
+    on the normal alone) and are 0."""
     count = frags.clip_source.shape[0]
-    n_chunks = max(1, min(count, 64))
-    for chunk in prange(n_chunks):
-        points, colour = np.zeros((6, 1), np.float32), np.empty((3, 1), np.float32)
-        for k in range(chunk, count, n_chunks):
+    for o in range(materials.shading_path.shape[0]):
+        if not held_per_triangle(o, materials, lights):
+            continue
+        n = 0
+        for k in range(count):
             s = frags.clip_source[k]
-            o = geo.tri_object[s]
-            if not held_per_triangle(o, materials, lights):
-                continue
-            nx, ny, nz = face_toward_viewer(geo, s)
-            points[3, 0], points[4, 0], points[5, 0] = np.float32(nx), np.float32(ny), np.float32(nz)
-            light_points(o, materials, lights, points, 0, 1, colour)
-            store_span(colour, 1, out[k:k + 1])
+            if geo.tri_object[s] == o:
+                nx, ny, nz = face_toward_viewer(geo, s)
+                points[0, n], points[1, n], points[2, n] = F0, F0, F0
+                points[3, n], points[4, n], points[5, n] = np.float32(nx), np.float32(ny), np.float32(nz)
+                n += 1
+        light_points(o, materials, lights, points, 0, n, colour)
+        store_span(colour, n, stored)
+        n = 0
+        for k in range(count):
+            if geo.tri_object[frags.clip_source[k]] == o:
+                out[k, 0], out[k, 1], out[k, 2] = stored[n, 0], stored[n, 1], stored[n, 2]
+                n += 1
 
 
-def held_colour_table(frags, geo, materials, lights) -> np.ndarray:
+def held_colour_table(frags, geo, materials, lights, ws=None) -> np.ndarray:
     """(K, 3) uint8 (:func:`held_colours`) for the K clipped triangles of ``frags``; the kernel
-    runs only when some object is :func:`held_per_triangle`."""
-    out = np.zeros((len(frags.clip_source), 3), np.uint8)
+    runs only when some object is flat (``PIXEL_FACE_NORMAL``). Scratch in workspace ``ws``."""
+    count = len(frags.clip_source)
+    out = np.zeros((count, 3), np.uint8)
     if any(path == PIXEL_FACE_NORMAL for path in materials.shading_path):
-        held_colours(frags, geo, materials, lights, out)
+        held_colours(frags, geo, materials, lights, empty(ws, "held.points", (6, max(count, 1)), np.float32),
+                     empty(ws, "held.colour", (3, max(count, 1)), np.float32),
+                     empty(ws, "held.stored", (max(count, 1), 3), np.uint8), out)
     return out

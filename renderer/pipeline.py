@@ -28,7 +28,7 @@ from renderer.clip import Clipped, clip_mesh, clipped_corners, corner_rows
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
-from renderer.raster import BATCH, IndexedTriangles, depth_to_window, rasterize_visibility, setup_triangles
+from renderer.raster import BATCH, IndexedTriangles, depth_to_window, rasterize_visibility, weight_planes
 from renderer.reflection.registry import material_table
 from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
 from renderer.texture_sampling import texture_table
@@ -242,15 +242,13 @@ class Stages(NamedTuple):
 def shading_fragments(won: ClippedMesh, tri_index: np.ndarray, perspective: bool, ws=None) -> Fragments:
     """The :class:`renderer.shading.Fragments` of the triangles that won a pixel (``won``,
     numbered as ``tri_index`` numbers them, :func:`renderer.visible.visible_triangles`):
-    their corners and weights written out, their facing and set-up planes (set up
-    :data:`renderer.raster.BATCH` at a time; shading reads no rows or spans)."""
+    their corners and weights written out, their facing and the planes of their weights
+    (:func:`renderer.raster.weight_planes`: shading reads no depth plane, rows or spans)."""
     tri_clip, clip_bary, clip_source = won.corners_written_out(ws, "visible")
-    front, plane = empty(ws, "visible.front", won.count, np.bool_), empty(ws, "visible.plane", (won.count, 11))
+    front, plane = empty(ws, "visible.front", won.count, np.bool_), empty(ws, "visible.plane", (won.count, 6))
     for a in range(0, won.count, BATCH):
         b = min(a + BATCH, won.count)
-        rows = won.corner_rows(a, b, ws, "visible.rows")
-        ccw, spans = empty(ws, "visible.ccw", (b - a, 3, 2), np.int64), empty(ws, "visible.spans", (b - a, 2), np.int64)
-        setup_triangles(rows, won.fixed, won.window, 0, False, front[a:b], ccw, spans, plane[a:b])
+        weight_planes(won.corner_rows(a, b, ws, "visible.rows"), won.fixed, won.window, front[a:b], plane[a:b])
     return Fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, perspective)
 
 

@@ -176,6 +176,22 @@ def setup_triangles(corners, fixed, window, height, cull_back, front, ccw, rows,
             rows[k, 0], rows[k, 1] = 1, 0
 
 
+@njit(cache=True, parallel=True)
+def weight_planes(corners, fixed, window, front, plane):
+    """The part of :func:`setup_triangles` that shading reads, for the triangles that won a
+    pixel: facing into ``front`` (K,) and the weights' plane — corner 0 and the edges to
+    corners 1 and 2, the first six columns of :class:`TriangleSetup`'s ``plane`` — into
+    ``plane`` (K, ≥ 6), the same bits (no depth plane, spans or rows: the raster is done)."""
+    for k in prange(corners.shape[0]):
+        i0, i1, i2 = corners[k, 0], corners[k, 1], corners[k, 2]
+        front[k] = ((fixed[i1, 0] - fixed[i0, 0]) * (fixed[i2, 1] - fixed[i0, 1])
+                    - (fixed[i2, 0] - fixed[i0, 0]) * (fixed[i1, 1] - fixed[i0, 1])) > 0  # signed_area_fixed
+        x0, y0 = window[i0, 0], window[i0, 1]
+        plane[k, 0], plane[k, 1] = x0, y0
+        plane[k, 2], plane[k, 3] = window[i1, 0] - x0, window[i1, 1] - y0
+        plane[k, 4], plane[k, 5] = window[i2, 0] - x0, window[i2, 1] - y0
+
+
 @njit(cache=True, inline="always")
 def row_span(k, row, ccw, width, rule):
     """Columns [first, last] of triangle ``k`` on ``row``, clamped to the image (first > last: none)."""

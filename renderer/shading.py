@@ -38,6 +38,7 @@ from renderer.reflection.registry import (light_points, reflect, reflect_span, s
                                          span_normal_only, spans_apply, store_span)
 from renderer.spans import face_toward_viewer, span_points, span_setup
 from renderer.texture_sampling import sample_texture
+from renderer.workspace import thread_workspace
 
 
 @njit(cache=True, inline="always")
@@ -108,7 +109,8 @@ class Fragments(NamedTuple):
     """The visibility buffer and the clipped triangles it points into (window rows, y up).
 
     tri_index (H, W) clipped triangle per pixel (:data:`renderer.raster.EMPTY` = none);
-    plane (K, 11) the triangles' set-up (:class:`renderer.raster.TriangleSetup`), from which
+    plane (K, ≥ 6) the triangles' set-up (the first six columns of
+    :class:`renderer.raster.TriangleSetup`'s, :func:`renderer.raster.weight_planes`), from which
     the screen-space weights of a pixel are worked out (:func:`renderer.raster.screen_weights`);
     front (K,); tri_clip (K, 3, 4); clip_bary (K, 3, 3) weights in the source triangle;
     clip_source (K,) source triangle; perspective: weights made perspective-correct (else
@@ -251,24 +253,6 @@ def light_span(o, row, c0, c1, consts, face, materials, lights, scratch, rgb):
 
 
 @njit(cache=True, inline="always")
-def shade_lit_span(k, row, c0, c1, frags, geo, inputs, scratch, rgb):
-    """Colour the pixels c0 … c1 − 1 of ``row`` (all showing clipped triangle ``k``) of an
-    object that :func:`span_covers`: a FACE_COLOUR triangle holds one colour
-    (:func:`hold_face_colour`); any other is lit by its model's span kernel (:func:`light_span`).
-    The same bytes as :func:`shade_span`, which takes the same ways for such an object.
-    ``inputs`` is ``(materials, lights, lit)``."""
-    materials, lights, lit = inputs
-    s = frags.clip_source[k]
-    o = geo.tri_object[s]
-    path = materials.shading_path[o]
-    if path == FACE_COLOUR:
-        hold_face_colour(s, row, c0, c1, lit, rgb)
-        return
-    face = path == PIXEL_FACE_NORMAL
-    light_span(o, row, c0, c1, span_setup(k, row, c0, frags, geo, face), face, materials, lights, scratch, rgb)
-
-
-@njit(cache=True, inline="always")
 def object_of(k, frags, geo):
     """The object of clipped triangle ``k``."""
     return geo.tri_object[frags.clip_source[k]]
@@ -324,8 +308,8 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
 
 @njit(cache=True, inline="always")
 def span_covers(o, materials, textures, lights):
-    """True when object ``o`` can be shaded by :func:`shade_lit_span`: untextured, and either
-    FACE_COLOUR or lit per pixel (PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED) by a model with a
+    """True when object ``o`` can be shaded by :func:`shade_rows_lit_spans`: untextured, and
+    either FACE_COLOUR or lit per pixel (PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED) by a model with a
     span kernel for these lights (:func:`shade_span`'s first way, or its second untextured).
     :func:`spans_cover_all` is its Python twin."""
     path = materials.shading_path[o]
@@ -428,12 +412,13 @@ def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands
 
 @njit(cache=True, parallel=True)
 def shade_rows_lit_spans(frags, geo, materials, lights, lit, held, background, n_bands, rgb):
-    """:func:`shade_rows` for a frame whose every object :func:`span_covers`: runs of one object
-    lit per pixel (:func:`shade_lit_run`), colours held per triangle (``held`` (K, 3) uint8,
-    :mod:`renderer.held_colours`) copied along their spans, the rest through
-    :func:`shade_lit_span`. The same bytes, without the pixel-by-pixel models and
-    textures: a frame that needs no more compiles no more (:func:`shade` chooses). A fresh
-    process drawing icosphere level 5 compiled its shading in 8 s instead of 27.5 s (CPU)."""
+    """:func:`shade_rows` for a frame whose every object :func:`span_covers`, three ways: runs of
+    one object lit per pixel (:func:`shade_lit_run`); colours held per triangle (``held`` (K, 3)
+    uint8, :mod:`renderer.held_colours`) copied along their spans; FACE_COLOUR triangles'
+    colours (:func:`hold_face_colour`). The same bytes as :func:`shade_rows`, which takes the
+    same ways span by span, without the pixel-by-pixel models and textures: a frame that
+    needs no more compiles no more (:func:`shade` chooses). A fresh process drawing
+    icosphere level 5 compiled its shading in 8 s instead of 27.5 s (CPU)."""
     height, width = frags.tri_index.shape
     for band in prange(n_bands):
         inputs = (materials, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
@@ -448,8 +433,8 @@ def shade_rows_lit_spans(frags, geo, materials, lights, lit, held, background, n
                     end = shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb)
                 elif held_per_triangle(object_of(k, frags, geo), materials, lights):
                     fill_colour(rgb, row, col, end, held[k])
-                else:
-                    shade_lit_span(k, row, col, end, frags, geo, inputs, scratch, rgb)
+                else:  # FACE_COLOUR
+                    hold_face_colour(frags.clip_source[k], row, col, end, lit, rgb)
                 col = end
 
 
@@ -462,7 +447,7 @@ def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, 
     height = frags.tri_index.shape[0]
     n_bands = shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height))
     if spans and spans_cover_all(inputs.materials, inputs.textures, inputs.lights):
-        held = held_colour_table(frags, geo, inputs.materials, inputs.lights)
+        held = held_colour_table(frags, geo, inputs.materials, inputs.lights, thread_workspace())
         shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, inputs.lit, held, background, n_bands, rgb)
     else:
         shade_rows(frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, background, n_bands,

@@ -113,14 +113,15 @@ def vtk_point_colours(o, materials, lights, points, first, count, colour):
     long as the run, not as a triangle's span. Complexities 0–2 only (:func:`vtk_span_applies`).
     The loops live in :func:`vtk_light_kernel`, compiled once with plain arguments: inlined
     at its call site with the kernel inputs' named tuples, numba took 16 s more to compile
-    the shading kernel."""
+    the shading kernel (``first`` and ``count`` go as int64: a literal 0 or 1 at a call site
+    made numba compile it again for that value, 1.3 s each)."""
     amb, dif, spe = materials.ambient[o], materials.diffuse[o], materials.specular[o]
     material = (np.float32(amb[0]), np.float32(amb[1]), np.float32(amb[2]), np.float32(dif[0]), np.float32(dif[1]),
                 np.float32(dif[2]), np.float32(spe[0]), np.float32(spe[1]), np.float32(spe[2]),
                 np.float32(materials.power[o]))
     shiny = spe[0] != 0.0 or spe[1] != 0.0 or spe[2] != 0.0  # else Ks·Cs·sf is 0 whatever sf
     vtk_light_kernel(vtk_complexity(o, materials, lights), shiny, material, (amb[0] + dif[0], amb[1] + dif[1],
-                     amb[2] + dif[2]), lights.direction, lights.intensity_rgb, points, first, count, colour)
+                     amb[2] + dif[2]), lights.direction, lights.intensity_rgb, points, np.int64(first), np.int64(count), colour)
 
 
 @njit(cache=True)
