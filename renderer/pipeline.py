@@ -28,7 +28,7 @@ from renderer.clip import Clipped, clip_mesh, clipped_corners, corner_rows
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
-from renderer.raster import BATCH, IndexedTriangles, depth_to_window, rasterize_visibility, weight_planes
+from renderer.raster import BATCH, IndexedTriangles, frame_depth_and_coverage, rasterize_visibility, weight_planes
 from renderer.reflection.registry import material_table
 from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
 from renderer.texture_sampling import texture_table
@@ -310,11 +310,11 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     rgb = np.empty((height, width, 3), np.uint8)
     shade(shading_fragments(won, vis.tri_index, perspective, ws), geo, inputs,
           to_8bit(np.asarray(scene.image.background)), rgb, spans=options.spans)
-    coverage = vis.tri_index >= 0
+    window_depth, coverage = frame_depth_and_coverage(vis)
     if translucent.any():
         coverage = coverage | draw_translucent(clipped.take(translucent).written_out(), vis.depth, rgb, geo, inputs,
                                                scene.render.transparency, perspective, rules, ws, options.spans)
-    frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(depth_to_window(vis.depth)),
+    frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=window_rows_to_image_rows(window_depth),
                   coverage=window_rows_to_image_rows(coverage))
     if not keep_stages:
         return frame, None

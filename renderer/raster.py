@@ -370,9 +370,28 @@ class Visibility(NamedTuple):
     tri_index: np.ndarray
 
 
+@njit(cache=True, parallel=True)
+def depth_planes(depth, tri_index, window_depth, covered):
+    """The frame's depth and coverage from the visibility buffer (rows in parallel):
+    ``window_depth`` = depth / (2²⁴ − 1) as float64, ``covered`` = tri_index ≠ EMPTY."""
+    for row in prange(depth.shape[0]):
+        for col in range(depth.shape[1]):
+            window_depth[row, col] = depth[row, col] / DEPTH_MAX
+            covered[row, col] = tri_index[row, col] != EMPTY
+
+
 def depth_to_window(depth: np.ndarray) -> np.ndarray:
     """24-bit integer depths → window depth 0..1 as float64 (``q / (2²⁴ − 1)``, 1.0 where empty)."""
     return depth / DEPTH_MAX
+
+
+def frame_depth_and_coverage(vis: "Visibility") -> tuple[np.ndarray, np.ndarray]:
+    """(H, W) float64 window depth (:func:`depth_to_window`) and (H, W) bool coverage of the
+    visibility buffer, window rows, worked out in one parallel pass (numpy's two whole-image
+    expressions took 2.5 ms a 1024² frame)."""
+    window_depth, covered = np.empty(vis.depth.shape), np.empty(vis.depth.shape, np.bool_)
+    depth_planes(vis.depth, vis.tri_index, window_depth, covered)
+    return window_depth, covered
 
 
 def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, fill_rule: str = "top-left",

@@ -487,3 +487,16 @@ def test_integer_z_buffer_matches_a_float_z_buffer_on_overlapping_triangles():
     assert (index >= 0).mean() > 0.3 and {1000, 1001} <= set(np.unique(zbuf[index >= 0]).tolist())
     np.testing.assert_array_equal(tri_index, index)
     np.testing.assert_array_equal(depth, zbuf / DEPTH_MAX)
+
+
+def test_frame_depth_and_coverage_are_the_buffers_divided_and_compared_in_one_pass():
+    """Window depth q / (2²⁴ − 1) in float64 and coverage tri_index ≠ EMPTY, as numpy writes them."""
+    from renderer.raster import DEPTH_CLEAR, EMPTY, Visibility, depth_to_window, frame_depth_and_coverage
+    rng = np.random.default_rng(4)
+    depth = rng.integers(0, 1 << 24, (37, 53)).astype(np.int32)
+    tri_index = rng.integers(-1, 9, (37, 53)).astype(np.int32)
+    depth[tri_index == EMPTY] = DEPTH_CLEAR
+    window_depth, covered = frame_depth_and_coverage(Visibility(depth, tri_index))
+    np.testing.assert_array_equal(window_depth, depth_to_window(depth))
+    np.testing.assert_array_equal(covered, tri_index != EMPTY)
+    assert window_depth[tri_index == EMPTY].tolist() == [1.0] * int((tri_index == EMPTY).sum())
