@@ -31,11 +31,12 @@ from renderer.spans import span_setup
 
 
 @njit(cache=True, inline="always")
-def span_linear_colours(k, row, c0, count, frags, geo, inputs, colour):
+def span_linear_colours(k, row, c0, count, frags, geo, inputs, colour, st):
     """The linear colours of clipped triangle ``k``'s pixels ``c0 … c0 + count − 1`` on
     ``row`` into ``colour`` (3, ≥ count) float32 (see the module docstring). ``frags``: a
     :class:`renderer.shading.Fragments` whose ``plane`` is the triangles' set-up (its
-    ``tri_index`` is not read); ``inputs``: ``(materials, textures, lights, lit)``."""
+    ``tri_index`` is not read); ``inputs``: ``(materials, textures, lights, lit)``; ``st``
+    (2, ≥ count) float64: scratch for a texture's coordinates."""
     materials, textures, lights, lit = inputs
     s = frags.clip_source[k]
     o = geo.tri_object[s]
@@ -47,7 +48,7 @@ def span_linear_colours(k, row, c0, count, frags, geo, inputs, colour):
         constant = face and not textured and span_normal_only(o, materials, lights)
         span_colours(o, materials, lights, consts, face, 1 if constant else count, colour)
         if textured:
-            modulate_span(k, row, c0, count, frags, geo, textures, o, colour)
+            modulate_span(k, row, c0, count, frags, geo, textures, o, colour, st)
         if constant:
             for i in range(1, count):
                 colour[0, i], colour[1, i], colour[2, i] = colour[0, 0], colour[1, 0], colour[2, 0]

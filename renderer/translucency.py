@@ -368,6 +368,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
     for b in prange(n_bands):
         inputs = (materials, textures, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
         colour = np.empty((3, max(width, 1)), np.float32)  # a run's linear colours
+        st = np.empty((2, max(width, 1)))  # and its texture coordinates
         behind = np.empty(3, np.int64)
         out = np.empty(3, np.int64)
         for strip in range(b, n_strips, n_bands):
@@ -391,7 +392,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                         if col == c0:  # behind the opaque surface
                             col += 1
                             continue
-                        span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, colour)
+                        span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, colour, st)
                         if fill:
                             for i in range(col - c0):
                                 j = start[row, c0 + i] + seen[row, c0 + i]
