@@ -37,7 +37,7 @@ from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
                                          span_normal_only, spans_apply, store_span)
 from renderer.spans import face_toward_viewer, span_points, span_setup
-from renderer.texture_sampling import sample_texture
+from renderer.texture_sampling import modulate_texels, sample_texture
 from renderer.workspace import thread_workspace
 
 
@@ -65,25 +65,48 @@ def to_8bit(rgb: np.ndarray) -> np.ndarray:
 @njit(cache=True, inline="always")
 def fragment_weights(frags, k, l1, l2):
     """Weights ``(w0, w1, w2)`` of the *source* triangle's vertices at a fragment of clipped
-    triangle ``k``.
+    triangle ``k``: :func:`source_weights` with its vertices' clip w and clipping weights.
 
     ``l1, l2`` are screen-space weights of clipped triangle ``k``'s vertices 1 and 2.
-    Perspective-correct (``frags.perspective``, what GPUs and VTK do): each is divided by
-    that vertex's clip w and the three renormalised. Otherwise they stay screen-linear, as
-    the course's scanline slides interpolate. Then they are mapped through the clipped
-    vertices' own weights in the source triangle.
     """
-    tri_clip, cb = frags.tri_clip, frags.clip_bary
+    return source_weights(l1, l2, clip_ws(frags.tri_clip, k), clip_weights(frags.clip_bary, k), frags.perspective)
+
+
+@njit(cache=True, inline="always")
+def clip_ws(tri_clip, k):
+    """Clip w of clipped triangle ``k``'s three vertices."""
+    return tri_clip[k, 0, 3], tri_clip[k, 1, 3], tri_clip[k, 2, 3]
+
+
+@njit(cache=True, inline="always")
+def clip_weights(cb, k):
+    """Clipped triangle ``k``'s vertices' weights in the source triangle, one 9-tuple: vertex 0's
+    three weights, then vertex 1's, then vertex 2's."""
+    return (cb[k, 0, 0], cb[k, 0, 1], cb[k, 0, 2], cb[k, 1, 0], cb[k, 1, 1], cb[k, 1, 2],
+            cb[k, 2, 0], cb[k, 2, 1], cb[k, 2, 2])
+
+
+@njit(cache=True, inline="always")
+def source_weights(l1, l2, w, cb, perspective):
+    """Weights ``(w0, w1, w2)`` of the *source* triangle's vertices from the screen-space weights
+    ``l1, l2`` of a clipped triangle's vertices 1 and 2.
+
+    Perspective-correct (``perspective``, what GPUs and VTK do): each is divided by that
+    vertex's clip w (``w``, a 3-tuple) and the three renormalised. Otherwise they stay
+    screen-linear, as the course's scanline slides interpolate. Then they are mapped
+    through the clipped vertices' own weights in the source triangle (``cb``, a 9-tuple,
+    :func:`clip_weights`).
+    """
     l0 = 1.0 - l1 - l2
-    if frags.perspective:
-        b0, b1, b2 = l0 / tri_clip[k, 0, 3], l1 / tri_clip[k, 1, 3], l2 / tri_clip[k, 2, 3]
+    if perspective:
+        b0, b1, b2 = l0 / w[0], l1 / w[1], l2 / w[2]
         s = b0 + b1 + b2
         b0, b1, b2 = b0 / s, b1 / s, b2 / s
     else:
         b0, b1, b2 = l0, l1, l2
-    return (b0 * cb[k, 0, 0] + b1 * cb[k, 1, 0] + b2 * cb[k, 2, 0],
-            b0 * cb[k, 0, 1] + b1 * cb[k, 1, 1] + b2 * cb[k, 2, 1],
-            b0 * cb[k, 0, 2] + b1 * cb[k, 1, 2] + b2 * cb[k, 2, 2])
+    return (b0 * cb[0] + b1 * cb[3] + b2 * cb[6],
+            b0 * cb[1] + b1 * cb[4] + b2 * cb[7],
+            b0 * cb[2] + b1 * cb[5] + b2 * cb[8])
 
 
 @njit(cache=True, inline="always")
@@ -209,23 +232,52 @@ def store(rgb, row, col, r, g, b):
 
 
 @njit(cache=True, inline="always")
-def modulate_span(k, row, c0, count, frags, geo, textures, o, colour):
-    """The span's linear colours (``colour`` (3, ≥ count) float32) multiplied by object
-    ``o``'s texture (VTK, GL_MODULATE). Each pixel's texture coordinates are interpolated
-    as :func:`fragment_colour` interpolates them (float64, the same weights), so a texel
-    is chosen as on the pixel-by-pixel path; only the product is float32, as in VTK's shader."""
+def span_tcoords(k, row, c0, count, frags, geo, st):
+    """Texture coordinates (s, t) of the pixels c0 … c0 + count − 1 of ``row`` (all showing
+    clipped triangle ``k``) into ``st`` (2, ≥ count) float64: for each pixel the bits
+    :func:`fragment_colour` gets. What is constant along the span is read here, once, and
+    handed to :func:`tcoords_along` as numbers."""
     s = frags.clip_source[k]
     i0, i1, i2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
-    tc = geo.tcoords
+    tc, plane = geo.tcoords, frags.plane
+    x0, y0, e1x, e1y, e2x, e2y = plane[k, 0], plane[k, 1], plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5]
+    tcoords_along((x0, row + 0.5 - y0, e1x, e1y, e2x, e2y, e1x * e2y - e2x * e1y), clip_ws(frags.tri_clip, k),
+                  clip_weights(frags.clip_bary, k), (tc[i0, 0], tc[i1, 0], tc[i2, 0], tc[i0, 1], tc[i1, 1], tc[i2, 1]),
+                  frags.perspective, c0, count, st)
+
+
+@njit(cache=True)
+def tcoords_along(edges, w, cb, tcoords, perspective, c0, count, st):
+    """The loop of :func:`span_tcoords`: pixel columns c0 … c0 + count − 1 of one row.
+
+    ``edges`` = (x0, py, e1x, e1y, e2x, e2y, a2): the clipped triangle's set-up (vertex 0's
+    x, the row's centre y less vertex 0's, its edges, twice its area), from which the
+    screen-space weights come as :func:`renderer.raster.screen_weights` works them out;
+    then :func:`source_weights` with the clip w ``w`` and clipping weights ``cb``; then the
+    source vertices' coordinates ``tcoords`` = (s0, s1, s2, t0, t1, t2) mixed. Straight
+    arithmetic that LLVM vectorises, its divisions above all. Compiled on its own, called
+    once per span: inlined, the general shading kernel took 2 s longer to compile cold, for
+    no measurable gain."""
+    x0, py, e1x, e1y, e2x, e2y, a2 = edges
+    s0, s1, s2, t0, t1, t2 = tcoords
     for i in range(count):
-        l1, l2 = screen_weights(k, row, c0 + i, frags.plane)
-        w0, w1, w2 = fragment_weights(frags, k, l1, l2)
-        ts = w0 * tc[i0, 0] + w1 * tc[i1, 0] + w2 * tc[i2, 0]
-        tt = w0 * tc[i0, 1] + w1 * tc[i1, 1] + w2 * tc[i2, 1]
-        tr, tg, tb = sample_texture(textures, o, ts, tt)
-        colour[0, i] *= np.float32(tr)
-        colour[1, i] *= np.float32(tg)
-        colour[2, i] *= np.float32(tb)
+        px = (c0 + i) + 0.5 - x0
+        w0, w1, w2 = source_weights((px * e2y - e2x * py) / a2, (e1x * py - px * e1y) / a2, w, cb, perspective)
+        st[0, i] = w0 * s0 + w1 * s1 + w2 * s2
+        st[1, i] = w0 * t0 + w1 * t1 + w2 * t2
+
+
+@njit(cache=True, inline="always")
+def modulate_span(k, row, c0, count, frags, geo, textures, o, colour, st):
+    """The span's linear colours (``colour`` (3, ≥ count) float32) multiplied by object
+    ``o``'s texture (VTK, GL_MODULATE). The pixels' texture coordinates are interpolated as
+    :func:`fragment_colour` interpolates them (float64, the same bits, :func:`span_tcoords`,
+    into the scratch ``st`` (2, ≥ count) float64), so a texel is chosen as on the
+    pixel-by-pixel path; then the whole span is filtered in one loop
+    (:func:`renderer.texture_sampling.modulate_texels`); only the product is float32, as in
+    VTK's shader."""
+    span_tcoords(k, row, c0, count, frags, geo, st)
+    modulate_texels(textures, o, st, count, colour)
 
 
 @njit(cache=True, inline="always")
@@ -244,7 +296,7 @@ def light_span(o, row, c0, c1, consts, face, materials, lights, scratch, rgb):
     along the span (a flat triangle whose model's colour depends on the normal alone), it is
     worked out at the first pixel and stored along it. ``scratch``: (points (6, W), colour
     (3, W)) float32."""
-    points, colour = scratch
+    points, colour, _ = scratch
     constant = face and span_normal_only(o, materials, lights)
     count = 1 if constant else c1 - c0
     reflect_span(o, materials, lights, consts, face, count, points, colour, rgb[row, c0:c0 + count])
@@ -269,8 +321,10 @@ def lit_per_pixel(o, materials, lights):
 
 @njit(cache=True, inline="always")
 def span_scratch(width):
-    """Float32 scratch of a row: ``(points (6, W), colour (3, W))`` (see :func:`shade_lit_run`)."""
-    return np.empty((6, max(width, 1)), np.float32), np.empty((3, max(width, 1)), np.float32)
+    """Scratch of a row: ``(points (6, W), colour (3, W))`` float32 (see :func:`shade_lit_run`)
+    and ``st`` (2, W) float64, a span's texture coordinates (:func:`modulate_span`)."""
+    return (np.empty((6, max(width, 1)), np.float32), np.empty((3, max(width, 1)), np.float32),
+            np.empty((2, max(width, 1))))
 
 
 @njit(cache=True, inline="always")
@@ -288,7 +342,7 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     code. ``inputs``: ``(materials, lights, lit)``; ``scratch``: :func:`span_scratch`,
     the points at the pixels' own columns."""
     materials, lights, lit = inputs
-    points, colour = scratch
+    points, colour, _ = scratch
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start, width = col, frags.tri_index.shape[1]
@@ -337,7 +391,7 @@ def shade_span(k, row, c0, c1, frags, geo, inputs, scratch, rgb):
     :func:`light_span`; textured, multiplied by its texels (:func:`modulate_span`), then
     stored; anything else goes pixel by pixel through :func:`fragment_colour`. (One
     :func:`renderer.spans.span_setup` for both span ways: the parallel loop this is inlined
-    into compiled in 52 s instead of 29 s with one for each.)
+    into compiled in 52 s instead of 29 s with one for each.) ``scratch``: :func:`span_scratch`.
     """
     materials, textures, lights, lit = inputs
     s = frags.clip_source[k]
@@ -351,9 +405,9 @@ def shade_span(k, row, c0, c1, frags, geo, inputs, scratch, rgb):
     if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
         consts = span_setup(k, row, c0, frags, geo, face)
         if textured:
-            points, colour = scratch
+            points, colour, st = scratch
             span_colours(o, materials, lights, consts, face, c1 - c0, points, colour)
-            modulate_span(k, row, c0, c1 - c0, frags, geo, textures, o, colour)
+            modulate_span(k, row, c0, c1 - c0, frags, geo, textures, o, colour, st)
             store_span(colour, c1 - c0, rgb[row, c0:c1])
         else:
             light_span(o, row, c0, c1, consts, face, materials, lights, scratch, rgb)

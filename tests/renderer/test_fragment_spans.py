@@ -15,7 +15,7 @@ from renderer.pipeline import SceneGeometry
 from renderer.raster import screen_weights, set_up
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.shading import Fragments, face_normals, fragment_colour
-from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, Textures
+from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, Textures, pack_lanes
 from renderer.window import SUBPIXEL
 
 from .kernel_inputs import materials, view_lights
@@ -45,7 +45,7 @@ def textures(filter_mode, wrap):
     texels = (np.random.default_rng(7).random((8 * 16, 3)) * 255).astype(np.uint8)
     return Textures(np.array([filter_mode is not None]), np.zeros(1, np.int64), np.array([16]), np.array([8]),
                     np.array([LINEAR if filter_mode == "linear" else NEAREST]),
-                    np.array([CLAMP if wrap == "clamp" else REPEAT]), texels)
+                    np.array([CLAMP if wrap == "clamp" else REPEAT]), pack_lanes(texels))
 
 
 LIGHTS = {"unlit": view_lights(complexity=0), "headlight": view_lights(complexity=1),
@@ -65,10 +65,10 @@ def colours_of_runs(path, lights, model="vtk", texture=(None, "repeat"), run=RUN
     inputs = (materials((0.1, 0.15, 0.2), (0.6, 0.5, 0.4), (0.5, 0.5, 0.5), 20.0, model=model, path=path),
               textures(*texture), lights, lit)
     out = np.empty((32, 3, 2 * RUN), np.float32)
-    points, colour = np.empty((6, RUN), np.float32), np.empty((3, RUN), np.float32)
+    points, colour, st = np.empty((6, RUN), np.float32), np.empty((3, RUN), np.float32), np.empty((2, RUN))
     for row in range(32):
         for c0 in range(0, 2 * RUN, run):
-            span_linear_colours(0, row, c0, run, frags, geo, inputs, (points, colour))
+            span_linear_colours(0, row, c0, run, frags, geo, inputs, (points, colour, st))
             out[row, :, c0:c0 + run] = colour[:, :run]
     return out, (frags, geo, inputs)
 

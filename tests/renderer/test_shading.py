@@ -11,15 +11,16 @@ from renderer.lit_colours import LitColours
 from renderer.pipeline import SceneGeometry
 from renderer.reflection.materials import (FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED,
                                            VERTEX_COLOUR)
+from renderer.raster import screen_weights
 from renderer.shading import (Fragments, ShadingInputs, face_normals, fragment_weights, plane_normal, shade,
-                              span_covers, spans_cover_all, to_8bit)
-from renderer.texture_sampling import NEAREST, REPEAT, Textures
+                              span_covers, span_tcoords, spans_cover_all, to_8bit)
+from renderer.texture_sampling import NEAREST, REPEAT, Textures, pack_lanes
 
 from .kernel_inputs import materials, view_lights
 
 BACKGROUND = np.array([10, 20, 30], np.uint8)
 UNTEXTURED = Textures(np.array([False]), np.zeros(1, np.int64), np.ones(1, np.int64), np.ones(1, np.int64),
-                      np.array([NEAREST]), np.array([REPEAT]), np.full((1, 3), 255, np.uint8))
+                      np.array([NEAREST]), np.array([REPEAT]), pack_lanes(np.full((1, 3), 255, np.uint8)))
 
 
 def triangle(verts_view, normals=None, w=(1.0, 1.0, 1.0), parallel=False):
@@ -82,6 +83,43 @@ def test_weights_are_carried_back_through_clipping():
     np.testing.assert_allclose(fragment_weights(frags, 0, 0.25, 0.25), [0.625, 0.125, 0.25])
 
 
+@njit
+def pixel_tcoords(k, row, col, frags, geo):
+    """A pixel's texture coordinates the way :func:`fragment_colour` works them out."""
+    l1, l2 = screen_weights(k, row, col, frags.plane)
+    w = fragment_weights(frags, k, l1, l2)
+    s, tc = frags.clip_source[k], geo.tcoords
+    i0, i1, i2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
+    return (w[0] * tc[i0, 0] + w[1] * tc[i1, 0] + w[2] * tc[i2, 0],
+            w[0] * tc[i0, 1] + w[1] * tc[i1, 1] + w[2] * tc[i2, 1])
+
+
+@pytest.mark.parametrize("perspective", [True, False])
+def test_a_spans_texture_coordinates_are_the_bits_of_its_pixels_one_at_a_time(perspective):
+    """``span_tcoords`` (the textured span's coordinates, constants read once, one loop) gives
+    every pixel the float64 bits ``fragment_colour`` interpolates for it: 40 clipped triangles
+    of random shape, clip w (0.3 … 6) and clipping weights, spans starting anywhere on 30 rows."""
+    rng = np.random.default_rng(11)
+    n_src, k_clip = 12, 40
+    tris = rng.integers(0, 30, (n_src, 3))
+    geo = triangle(np.zeros((3, 3)))._replace(triangles=tris, tcoords=rng.uniform(-2.0, 3.0, (30, 2)))
+    plane = np.zeros((k_clip, 11))
+    plane[:, :2] = rng.uniform(0.0, 40.0, (k_clip, 2))
+    plane[:, 2:6] = rng.uniform(-30.0, 30.0, (k_clip, 4))
+    tri_clip = np.zeros((k_clip, 3, 4))
+    tri_clip[:, :, 3] = rng.uniform(0.3, 6.0, (k_clip, 3))
+    cb = rng.random((k_clip, 3, 3))
+    frags = Fragments(np.zeros((1, 1), np.int32), plane, np.ones(k_clip, np.bool_), tri_clip,
+                      cb / cb.sum(axis=2, keepdims=True), rng.integers(0, n_src, k_clip), perspective)
+    st = np.empty((2, 64))
+    for k in range(k_clip):
+        for row in range(30):
+            c0, count = int(rng.integers(0, 40)), int(rng.integers(1, 25))
+            span_tcoords(k, row, c0, count, frags, geo, st)
+            expected = [pixel_tcoords(k, row, c0 + i, frags, geo) for i in range(count)]
+            assert st[:, :count].T.tolist() == [list(e) for e in expected], (k, row, c0)
+
+
 def test_plane_normal_is_the_unit_cross_product_and_zero_when_degenerate():
     """(1,0,0) − 0 × (0,2,0) − 0 = (0,0,2) → (0,0,1); three points on a line → 0."""
     n = np.empty(3)
@@ -116,7 +154,7 @@ def test_the_texture_modulates_the_primary_colour_and_not_the_secondary():
     red 128 + 51 = 179, green and blue 127.5 → 128."""
     geo = triangle([[0, 0, -2], [1, 0, -2], [0, 1, -2]])
     lit = LitColours(np.zeros((3, 6)), np.array([[1.0, 0.5, 0.5, 0.2, 0.0, 0.0]]))
-    textured = UNTEXTURED._replace(textured=np.array([True]), texels=np.array([[128, 255, 255]], np.uint8))
+    textured = UNTEXTURED._replace(textured=np.array([True]), texels=pack_lanes(np.array([[128, 255, 255]], np.uint8)))
     rgb = shade_all(fragments(geo, [[[0.2, 0.2]]]), geo, materials(0, 0, 0, 1, path=FACE_COLOUR), lit, textured)
     assert rgb.tolist() == [[[179, 128, 128]]]
 

@@ -15,8 +15,10 @@ from lab.normals import radial_normals
 from lab.scene import Camera, Image, Light, Material, RenderSettings, Scene, SceneObject, headlight
 from lab.normals import angle_weighted_normals
 from lab.shapes import cube, cylinder, icosphere, quad
-from renderer import RenderOptions, render
+from renderer import RenderOptions, pipeline, render
+from renderer.shading import shade, span_tcoords
 from .single_thread import one_thread
+from .texture_filters import by_definition
 
 SCENE_LIGHT = Light(kind="scene", position=(3.0, 4.0, 5.0))
 LIGHTS = {
@@ -152,3 +154,41 @@ def test_textured_spans_give_the_bytes_of_pixel_by_pixel_shading(filter_mode, wr
     fast = render(s)
     assert fast.coverage.mean() > 0.5
     np.testing.assert_array_equal(fast.rgb, render(s, RenderOptions(spans=False)).rgb)
+
+
+EDGE_CASES = [(f, w, i) for f in ("nearest", "linear") for w in ("repeat", "clamp") for i in ("perspective", "screen")]
+
+
+@pytest.mark.parametrize("filter_mode, wrap, interpolation", EDGE_CASES, ids=["-".join(c) for c in EDGE_CASES])
+def test_textured_spans_on_texel_edges_show_the_filter_as_defined(filter_mode, wrap, interpolation, monkeypatch):
+    """A quad filling a 64×64 frame under a parallel camera, texture coordinates from −1 to 3
+    (four periods; clamp holds three of them to the edge texels) on a 32×16 texture: every
+    pixel centre lies exactly on a texel edge across (s·32 an integer) and on a texel centre
+    up (t·16 − ½ an integer: the linear filter's weight 0), checked. Unlit white, so each
+    pixel shows its texel value: spans of the whole row and pixel by pixel both give the
+    filter as defined (:func:`texture_filters.by_definition`), byte for byte."""
+    from lab.texture import Texture
+    from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT
+
+    tex = Texture(checker(16), filter=filter_mode, wrap=wrap)
+    board = replace(quad(2.0), point_normals=np.tile([0.0, 0.0, 1.0], (4, 1)),
+                    tcoords=np.array([[-1.0, -1.0], [3.0, -1.0], [3.0, 3.0], [-1.0, 3.0]]))
+    s = scene("phong", LIGHTS["one-scene-light"], size=(64, 64), interpolation=interpolation,
+              objects=(SceneObject(mesh=board, material=Material(color=(1.0, 1.0, 1.0), lighting=False),
+                                   shading="phong", texture=tex),),
+              camera=Camera(position=(0.0, 0.0, 5.0), parallel=True, parallel_scale=1.0, clipping_range=(0.5, 30.0)))
+    seen = []
+    monkeypatch.setattr(pipeline, "shade", lambda frags, geo, *a, **k: seen.append((frags, geo)) or
+                        shade(frags, geo, *a, **k))
+    fast = render(s)
+    frags, geo = seen[0]
+    st = np.empty((2, 1))
+    for row, col in np.ndindex(64, 64):  # window rows, y up
+        span_tcoords(frags.tri_index[row, col], row, col, 1, frags, geo, st)
+        assert st[:, 0].tolist() == [(col + 0.5) / 16 - 1, (row + 0.5) / 16 - 1]
+    codes = (LINEAR if filter_mode == "linear" else NEAREST, CLAMP if wrap == "clamp" else REPEAT)
+    texels = tex.texels_8bit.reshape(-1, 3)
+    expected = [[by_definition(texels, 32, 16, *codes, (col + 0.5) / 16 - 1, (63 - r + 0.5) / 16 - 1)
+                 for col in range(64)] for r in range(64)]  # image rows, top first
+    np.testing.assert_array_equal(fast.rgb, expected)
+    np.testing.assert_array_equal(render(s, RenderOptions(spans=False)).rgb, expected)

@@ -1,10 +1,15 @@
-"""Texture sampling: which texel nearest picks, how linear blends, how repeat and clamp wrap."""
+"""Texture sampling: which texel nearest picks, how linear blends, how repeat and clamp wrap;
+a span's loop gives what one fragment at a time gives."""
 import numpy as np
+import pytest
 
-from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, sample
+from renderer.texture_sampling import (CLAMP, LINEAR, NEAREST, REPEAT, Textures, modulate_texels, pack_lanes, sample,
+                                       texel_lanes)
+
+from .texture_filters import by_definition
 
 # a 2×2 8-bit texture, rows from the bottom: texel (0,0) = [10, 20, 30], (1,0) = [110, 120, 130], …
-TEX = np.array([[10, 20, 30], [110, 120, 130], [210, 220, 230], [50, 60, 70]], dtype=np.uint8)
+TEX = pack_lanes(np.array([[10, 20, 30], [110, 120, 130], [210, 220, 230], [50, 60, 70]], dtype=np.uint8))
 
 
 def at(s, t, filt=NEAREST, wrap=REPEAT):
@@ -38,3 +43,76 @@ def test_linear_repeat_blends_across_the_wrap():
     """With repeat, the point between the last and first column blends both (s = 0 lies midway)."""
     assert at(0.0, 0.25, LINEAR, REPEAT) == [60, 70, 80]
     assert at(0.0, 0.25, LINEAR, CLAMP) == [10, 20, 30]
+
+
+# --------------------------------------------------------------------------- the span's loop and the lanes
+def coordinates(size, rng):
+    """Along one axis of a texture ``size`` texels long: texel edges i/size and centres over
+    three periods, the linear filter's weight steps (i + ½ + k/256)/size, a float step either
+    side of each edge, and random values from −3 to 4 (both wraps at work)."""
+    edges = np.arange(-size, 2 * size + 1) / size
+    steps = ((np.arange(-size, 2 * size)[:, None] + 0.5 + np.array([0, 1, 127, 128, 255]) / 256) / size).ravel()
+    return np.concatenate([edges, edges + 0.5 / size, steps, np.nextafter(edges, -np.inf),
+                           np.nextafter(edges, np.inf), rng.uniform(-3, 4, 400)])
+
+
+def points(width, height, seed=0):
+    """(s, t): every value of :func:`coordinates` on each axis, paired at random."""
+    rng = np.random.default_rng(seed)
+    s, t = coordinates(width, rng), coordinates(height, rng)
+    n = max(len(s), len(t))
+    return rng.permutation(np.resize(s, n)), rng.permutation(np.resize(t, n))
+
+
+SIZES = [(16, 8), (3, 5), (1, 1)]
+FILTERS = [(f, w, size) for f in (NEAREST, LINEAR) for w in (REPEAT, CLAMP) for size in SIZES]
+
+
+@pytest.mark.parametrize("filt, wrap, size", FILTERS, ids=[f"{'nearest linear'.split()[f]}-{'repeat clamp'.split()[w]}-"
+                                                            f"{s[0]}x{s[1]}" for f, w, s in FILTERS])
+def test_sample_is_the_filter_as_defined_inside_outside_and_on_texel_edges(filt, wrap, size):
+    """Nearest and linear, repeat and clamp, on textures of 16×8, 3×5 and 1×1 texels (every
+    index of a 1-texel texture wraps): :func:`sample` gives the plainly written filter at random
+    points, at texel edges and centres, at the linear weights' 1/256 steps and one float either
+    side of an edge."""
+    width, height = size
+    texels = np.random.default_rng(5).integers(0, 256, (width * height, 3)).astype(np.uint8)
+    lanes = pack_lanes(texels)
+    for s, t in zip(*points(width, height)):
+        got = np.rint(np.array(sample(lanes, 0, width, height, filt, wrap, s, t)) * 255).astype(int).tolist()
+        assert got == by_definition(texels, width, height, filt, wrap, s, t), (s, t)
+
+
+@pytest.mark.parametrize("filt, wrap, size", FILTERS, ids=[f"{'nearest linear'.split()[f]}-{'repeat clamp'.split()[w]}-"
+                                                            f"{s[0]}x{s[1]}" for f, w, s in FILTERS])
+def test_a_span_is_modulated_by_exactly_the_values_sample_gives(filt, wrap, size):
+    """The span's loop (filter and wrap chosen once, :func:`modulate_texels`) multiplies each
+    pixel's colour by float32 of what :func:`sample` gives there, bit for bit; a second
+    texture after the first (``offset``) is read where it starts."""
+    width, height = size
+    rng = np.random.default_rng(9)
+    first = rng.integers(0, 256, (7, 3)).astype(np.uint8)  # another object's texture before this one
+    texels = rng.integers(0, 256, (width * height, 3)).astype(np.uint8)
+    lanes = pack_lanes(np.concatenate([first, texels]))
+    textures = Textures(np.array([True, True]), np.array([0, 7]), np.array([7, width]), np.array([1, height]),
+                        np.array([NEAREST, filt]), np.array([REPEAT, wrap]), lanes)
+    s, t = points(width, height, seed=1)
+    st = np.ascontiguousarray(np.stack([s, t]))
+    start = rng.uniform(0.2, 1.5, (3, len(s))).astype(np.float32)
+    colour = start.copy()
+    modulate_texels(textures, 1, st, len(s), colour)
+    expected = start * np.array([sample(lanes, 7, width, height, filt, wrap, a, b) for a, b in zip(s, t)],
+                                np.float32).T
+    np.testing.assert_array_equal(colour, expected)
+
+
+def test_lanes_hold_red_green_and_blue_sixteen_bits_apart():
+    assert pack_lanes(np.array([[1, 2, 3]], np.uint8)).tolist() == [1 + (2 << 16) + (3 << 32)]
+
+
+def test_a_textures_lanes_are_worked_out_once():
+    from lab.texture import Texture
+
+    tex = Texture(np.random.default_rng(2).random((4, 6, 3)))
+    assert texel_lanes(tex) is texel_lanes(tex)
+    np.testing.assert_array_equal(texel_lanes(tex), pack_lanes(tex.texels_8bit))
