@@ -23,13 +23,18 @@ from renderer.workspace import empty
 
 
 @njit(cache=True, parallel=True)
-def mark_shown(tri_index, number):
-    """``number[k] = 1`` for every triangle ``k`` that a pixel of ``tri_index`` (H, W) shows."""
+def over_shown(tri_index, number, renumber):
+    """Every covered pixel of ``tri_index`` (H, W), rows in parallel: ``renumber`` False marks
+    its triangle (``number[k] = 1``); True rewrites the pixel as its triangle's number
+    ``number[k]``. (One kernel for both passes: one compiled, not two.)"""
     for row in prange(tri_index.shape[0]):
         for col in range(tri_index.shape[1]):
             k = tri_index[row, col]
             if k != EMPTY:
-                number[k] = 1
+                if renumber:
+                    tri_index[row, col] = number[k]
+                else:
+                    number[k] = 1
 
 
 @njit(cache=True)
@@ -45,16 +50,6 @@ def number_marked(number, ids):
     return count
 
 
-@njit(cache=True, parallel=True)
-def renumber_pixels(tri_index, number):
-    """Every covered pixel of ``tri_index`` rewritten as its triangle's number."""
-    for row in prange(tri_index.shape[0]):
-        for col in range(tri_index.shape[1]):
-            k = tri_index[row, col]
-            if k != EMPTY:
-                tri_index[row, col] = number[k]
-
-
 def visible_triangles(tri_index: np.ndarray, count: int, ws=None) -> np.ndarray:
     """The triangles (of ``count``) that some pixel of ``tri_index`` (H, W) int32 shows, in
     draw order, as an index array (V,) int64; ``tri_index`` is renumbered in place to count
@@ -66,8 +61,8 @@ def visible_triangles(tri_index: np.ndarray, count: int, ws=None) -> np.ndarray:
     """
     number = empty(ws, "scratch.per_triangle", count, np.int64)  # shared with the clipper's offsets
     number[:] = 0
-    mark_shown(tri_index, number)
+    over_shown(tri_index, number, False)
     ids = np.empty(count, np.int64)
     shown = number_marked(number, ids)
-    renumber_pixels(tri_index, number)
+    over_shown(tri_index, number, True)
     return ids[:shown].copy()  # not a view of the (count,) buffer
