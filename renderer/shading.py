@@ -294,8 +294,7 @@ def light_span(o, row, c0, c1, consts, face, materials, lights, scratch, rgb):
     """Object ``o``'s span kernel over the pixels c0 … c1 − 1 of ``row`` (``consts``, ``face``
     from :func:`renderer.spans.span_setup`), stored as 8 bits; when the colour cannot change
     along the span (a flat triangle whose model's colour depends on the normal alone), it is
-    worked out at the first pixel and stored along it. ``scratch``: (points (6, W), colour
-    (3, W)) float32."""
+    worked out at the first pixel and stored along it. ``scratch``: :func:`span_scratch`."""
     points, colour, _ = scratch
     constant = face and span_normal_only(o, materials, lights)
     count = 1 if constant else c1 - c0

@@ -367,7 +367,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
     n_strips = (height + STRIP_ROWS - 1) // STRIP_ROWS
     for b in prange(n_bands):
         inputs = (materials, textures, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
-        scratch = span_scratch(width)  # a run's points and linear colours
+        scratch = span_scratch(width)  # a run's points, linear colours and texture coordinates
         colour = scratch[1]
         behind = np.empty(3, np.int64)
         out = np.empty(3, np.int64)
