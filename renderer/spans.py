@@ -136,5 +136,6 @@ def span_points(consts, face, count, points, at):
     reads a slice of columns through its strides, and the loops then do not vectorise.)"""
     for i in range(count):
         px, py, pz, nx, ny, nz = span_pixel(consts, i, face)
-        points[0, at + i], points[1, at + i], points[2, at + i] = px, py, pz
-        points[3, at + i], points[4, at + i], points[5, at + i] = nx, ny, nz
+        j = np.uint64(at + i)  # unsigned: no wrap-around for a negative index, which keeps a loop scalar
+        points[0, j], points[1, j], points[2, j] = px, py, pz
+        points[3, j], points[4, j], points[5, j] = nx, ny, nz

@@ -137,7 +137,7 @@ def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, point
     if complexity == HEADLIGHT_ONLY:
         c0, c1, c2 = np.float32(l_col[0, 0]), np.float32(l_col[0, 1]), np.float32(l_col[0, 2])
         for i in range(count):
-            df = max(HEADLIGHT_FLOOR, points[5, first + i])
+            df = max(HEADLIGHT_FLOOR, points[5, np.uint64(first + i)])
             sf = pow_f32(df, power) if shiny else F0
             colour[0, i] = a0 + df * d0 * c0 + sf * s0 * c0
             colour[1, i] = a1 + df * d1 * c1 + sf * s1 * c1
@@ -148,7 +148,7 @@ def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, point
                       np.float32(direction[0, 2]))  # VTK's l: the direction the light travels
         c0, c1, c2 = np.float32(l_col[0, 0]), np.float32(l_col[0, 1]), np.float32(l_col[0, 2])
         for i in range(count):
-            j = first + i
+            j = np.uint64(first + i)  # unsigned: no wrap-around, the loop vectorises
             vx, vy, vz = _view_vector(points[0, j], points[1, j], points[2, j])
             ndl, rdv = _reflect_dot(lx, ly, lz, points[3, j], points[4, j], points[5, j], vx, vy, vz)
             df = max(F0, -ndl)
@@ -159,7 +159,7 @@ def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, point
             colour[2, i] = a2 + d2 * (df * c2) + s2 * (sf * c2)
         return
     for i in range(count):
-        j = first + i
+        j = np.uint64(first + i)  # unsigned: no wrap-around, the loop vectorises
         nx, ny, nz = points[3, j], points[4, j], points[5, j]
         vx, vy, vz = _view_vector(points[0, j], points[1, j], points[2, j])
         sd0 = sd1 = sd2 = ss0 = ss1 = ss2 = F0  # Σ df·Lc, Σ sf·Lc

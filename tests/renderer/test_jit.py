@@ -72,8 +72,8 @@ def test_an_edit_to_a_callee_in_another_file_shows_in_the_next_render(tmp_path):
 
     lighting = tree / "renderer" / "reflection" / "vtk_spans.py"
     source = lighting.read_text()
-    assert source.count("df = max(HEADLIGHT_FLOOR, points[5, first + i])") == 1
-    lighting.write_text(source.replace("df = max(HEADLIGHT_FLOOR, points[5, first + i])", "df = np.float32(0.5) * max(HEADLIGHT_FLOOR, points[5, first + i])"))
+    assert source.count("df = max(HEADLIGHT_FLOOR, points[5, np.uint64(first + i)])") == 1
+    lighting.write_text(source.replace("df = max(HEADLIGHT_FLOOR, points[5, np.uint64(first + i)])", "df = np.float32(0.5) * max(HEADLIGHT_FLOOR, points[5, first + i])"))
     edited = render_in_fresh_process(tree)
     assert edited["misses"] > 0
     assert edited["image"] != cold["image"], "the headlight's halved diffuse term must show"
