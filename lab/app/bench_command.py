@@ -137,6 +137,9 @@ def run_bench(args) -> int:
         for name in BENCH_SCENES:
             print(name)
         return 0
+    for target in (args.json, args.markdown):  # out/ does not exist in a fresh clone: make it before measuring
+        if target:
+            Path(target).parent.mkdir(parents=True, exist_ok=True)
     run = measure(args)
     text = report(run)
     print(text)

@@ -66,3 +66,13 @@ def test_memory_all_measures_both_sides_of_every_row(tmp_path):
     assert done.returncode == 0 and "Traceback" not in done.stderr, done.stderr
     memory = json.loads(out.read_text())["rows"][0]["memory"]
     assert set(memory) == {"ours", "reference"} and all(v >= 0 for v in memory.values())
+
+
+def test_json_and_markdown_go_into_folders_that_do_not_exist_yet(tmp_path):
+    """A fresh clone has no out/: ``make bench`` writes out/bench.json there all the same."""
+    out, page = tmp_path / "out" / "bench.json", tmp_path / "new" / "page.md"
+    done = scanlab("bench", "ico5-flat", "--size", "32x32", "--repeat", "1", "--memory", "none", "--no-startup",
+                   "--json", str(out), "--markdown", str(page))
+    assert done.returncode == 0, done.stderr
+    assert json.loads(out.read_text())["rows"][0]["scene"] == "ico5-flat"
+    assert START in page.read_text()
