@@ -62,7 +62,7 @@ def visible_triangles(tri_index: np.ndarray, count: int, ws=None) -> np.ndarray:
     number = empty(ws, "scratch.per_triangle", count, np.int64)  # shared with the clipper's offsets
     number[:] = 0
     over_shown(tri_index, number, False)
-    ids = np.empty(count, np.int64)
+    ids = empty(ws, "visible.ids", count, np.int64)  # a list as long as the triangles: reused, not faulted in anew
     shown = number_marked(number, ids)
     over_shown(tri_index, number, True)
-    return ids[:shown].copy()  # not a view of the (count,) buffer
+    return ids[:shown].copy()  # not a view of the workspace
