@@ -103,8 +103,8 @@ def _unknown_to_scheduler(client, keys: list[str]) -> set[str]:
     return set(client.run_on_scheduler(lambda dask_scheduler: [k for k in keys if k not in dask_scheduler.tasks]))
 
 
-def run_cases(client, requests: dict[str, dict], timeout: float,
-              stall: float = 60.0) -> Iterator[list[tuple[str, dict]]]:
+def run_cases(client, requests: dict[str, dict], timeout: float, stall: float = 60.0,
+              stop=lambda: False, poll: float = 1.0) -> Iterator[list[tuple[str, dict]]]:
     """Submit every request (case_id → request, in order) and yield the results in batches
     as they finish: lists of (case_id, response). A task that failed gives a response with
     its ``status`` and ``error`` (see the module's docstring).
@@ -113,6 +113,9 @@ def run_cases(client, requests: dict[str, dict], timeout: float,
     fetched (its worker died just after the case) has the case submitted once more; so has
     a case the scheduler no longer knows after ``stall`` seconds without any result. A
     cluster left with no workers for that long raises ClusterError.
+
+    ``stop()`` is asked every ``poll`` seconds and after every batch; once it is true no
+    more batches come (the cases still queued or running are left to the client's close).
     """
     from distributed import wait
 
@@ -123,10 +126,10 @@ def run_cases(client, requests: dict[str, dict], timeout: float,
     futures = {submit(case_id, 0): case_id for case_id in requests}
     attempts = dict.fromkeys(requests, 0)
     pending, quiet_since = set(futures), time.monotonic()
-    while pending:
+    while pending and not stop():
         try:
-            done, pending = wait(pending, timeout=5, return_when="FIRST_COMPLETED")
-        except TimeoutError:  # nothing finished in these 5 s
+            done, pending = wait(pending, timeout=poll, return_when="FIRST_COMPLETED")
+        except TimeoutError:  # nothing finished in this while
             done = set()
         dropped = set()
         if not done and time.monotonic() - quiet_since > stall:

@@ -26,6 +26,7 @@ from compare.verdict import FAIL, PASSES_UNEXPECTEDLY
 from lab.app.sweep.cases import Case, build_grid, expand, read_grid_file
 from lab.app.sweep.cluster import ClusterError, open_client, run_cases, worker_count
 from lab.app.sweep.histograms import write_histograms
+from lab.app.sweep.interrupts import StopRequest
 from lab.app.sweep.panels import draw_panels
 from lab.app.sweep.progress import Progress, duration
 from lab.app.sweep.sources import find_sources
@@ -87,15 +88,16 @@ def _say(text: str) -> None:
 
 
 def run_cases_into(options: SweepOptions, pending: list[Case], table: ResultsTable, store: FrameStore,
-                   progress, run: str) -> int:
-    """Run ``pending`` on the cluster, writing rows and frames as they arrive; the number of workers."""
+                   progress, run: str, stop=lambda: False) -> int:
+    """Run ``pending`` on the cluster, writing rows and frames as they arrive, until every
+    case is done or ``stop()`` is true; the number of workers."""
     by_id = {case.case_id: case for case in pending}
     with open_client(options.scheduler, options.workers, options.memory_limit) as client:
         workers = worker_count(client)
         where = options.scheduler or "a local cluster"
         _say(f"running {len(pending)} cases on {workers} workers ({where}); time limit {options.timeout:g} s a case")
         requests = {case.case_id: request_for(case, options.out) for case in pending}
-        for batch in run_cases(client, requests, options.timeout):
+        for batch in run_cases(client, requests, options.timeout, stop=stop):
             rows = []
             for case_id, response in batch:
                 frames = response.pop("frames", None)
@@ -120,7 +122,12 @@ def _outputs(options: SweepOptions, table: ResultsTable, store: FrameStore, fact
 
 def run_sweep(options: SweepOptions, progress_stream=None) -> int:
     """Do the whole sweep; exit status 0 (every case of this sweep passes), 1 (any FAIL or
-    unfinished case), 130 (interrupted)."""
+    unfinished case), 130 (interrupted: Ctrl-C at any moment of the run, see :mod:`.interrupts`)."""
+    with StopRequest() as stop:
+        return _sweep(options, progress_stream, stop)
+
+
+def _sweep(options: SweepOptions, progress_stream, stop: StopRequest) -> int:
     cases = plan(options)
     options.out.mkdir(parents=True, exist_ok=True)
     table = ResultsTable(options.out)
@@ -141,8 +148,8 @@ def run_sweep(options: SweepOptions, progress_stream=None) -> int:
     started, interrupted, stopped, workers = time.perf_counter(), False, None, 0
     try:
         if pending:
-            workers = run_cases_into(options, pending, table, store, progress, run)
-    except KeyboardInterrupt:
+            workers = run_cases_into(options, pending, table, store, progress, run, stop)
+    except KeyboardInterrupt:  # a second Ctrl-C
         interrupted = True
     except ClusterError as exc:  # written below, after the outputs of what was done
         stopped = exc
@@ -157,7 +164,7 @@ def run_sweep(options: SweepOptions, progress_stream=None) -> int:
     _say(f"table: {table.path}\npage: {page.resolve()}")
     if stopped is not None:
         raise stopped
-    if interrupted:
+    if interrupted or stop.requested:
         print("scanlab sweep: interrupted; run the same command again to go on where it stopped", file=sys.stderr)
         return 130
     final = {row["case_id"]: row for row in table.rows()}

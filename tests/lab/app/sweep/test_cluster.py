@@ -103,3 +103,23 @@ def test_a_cluster_left_without_workers_ends_the_run_in_one_line(monkeypatch):
     client = FakeClient({"a": [{"status": "ok"}]}, workers=0)
     with pytest.raises(ClusterError, match="no workers for 0 s"):
         run(client, ["a"], monkeypatch, hold={"a"}, stall=0.0)
+
+
+def test_once_stop_is_asked_for_no_more_batches_come_even_while_cases_are_still_running(monkeypatch):
+    import distributed
+    client = FakeClient({"a": [{"status": "ok"}], "b": [{"status": "ok"}]})
+    calls = {"n": 0}
+
+    def one_at_a_time_then_nothing(pending, timeout, return_when):
+        calls["n"] += 1
+        if calls["n"] == 1:
+            first = min(pending, key=lambda f: f.key)
+            return {first}, pending - {first}
+        raise AssertionError("waited on the cluster after the stop was asked for")  # "b" would run on and on
+
+    monkeypatch.setattr(distributed, "wait", one_at_a_time_then_nothing)
+    asked = []
+    batches = run_cases(client, {"a": {}, "b": {}}, 10.0, stop=lambda: len(asked) > 0, poll=0.01)
+    assert next(batches) == [("a", {"status": "ok"})]
+    asked.append(True)
+    assert list(batches) == [], "the generator ends at the next question, not after b"

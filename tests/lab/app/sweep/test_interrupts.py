@@ -1,0 +1,51 @@
+"""Ctrl-C during a sweep: the first SIGINT only asks to stop (no exception, wherever the main
+thread is); a second one interrupts at once; leaving the context puts the old handler back."""
+from __future__ import annotations
+
+import io
+import os
+import signal
+import threading
+
+import pytest
+
+from lab.app.sweep.interrupts import STOPPING, StopRequest
+
+
+def test_the_first_ctrl_c_sets_requested_and_says_how_to_stop_at_once():
+    said = io.StringIO()
+    with StopRequest(stream=said) as stop:
+        assert not stop() and not stop.requested
+        os.kill(os.getpid(), signal.SIGINT)
+        assert stop.requested and stop()
+    assert said.getvalue().strip() == STOPPING and "Ctrl-C again" in STOPPING
+
+
+def test_a_second_ctrl_c_raises_keyboard_interrupt():
+    with StopRequest(stream=io.StringIO()) as stop:
+        os.kill(os.getpid(), signal.SIGINT)
+        with pytest.raises(KeyboardInterrupt):
+            os.kill(os.getpid(), signal.SIGINT)
+    assert stop.requested
+
+
+def test_leaving_the_context_puts_the_previous_handler_back():
+    before = signal.getsignal(signal.SIGINT)
+    with StopRequest():
+        assert signal.getsignal(signal.SIGINT) is not before
+    assert signal.getsignal(signal.SIGINT) is before
+
+
+def test_outside_the_main_thread_it_does_nothing():
+    seen = {}
+
+    def enter():
+        with StopRequest() as stop:
+            seen["requested"] = stop.requested
+            seen["handler"] = signal.getsignal(signal.SIGINT)
+
+    before = signal.getsignal(signal.SIGINT)
+    worker = threading.Thread(target=enter)
+    worker.start()
+    worker.join()
+    assert seen == {"requested": False, "handler": before}
