@@ -149,8 +149,10 @@ def clip_mesh(verts_clip, triangles, ws=None, trivial=True) -> Clipped:
     **Trivial reject and accept** (Cohen–Sutherland outcodes, :func:`outcode`): a
     triangle whose three vertices all lie outside one plane is dropped; one whose vertices
     are all inside every plane is kept as it is (no copy); only the others are cut
-    (:func:`clip_one`) into pieces. Parallel passes over the triangles — count what each
-    leaves, then write at the prefix-sum offsets — keep the source order.
+    (:func:`clip_one`) into pieces. Parallel passes over the triangles — classify by the
+    outcodes (:func:`trivial_pass`), count what each straddling one leaves
+    (:func:`count_pieces`), then write at the prefix-sum offsets — keep the source order.
+    When nothing straddles a plane, the cutting passes are not run (nor compiled).
 
     ws : renderer.workspace.Workspace, optional; the outputs then live in it.
     trivial : False cuts every triangle against all six planes (the plain path the tests
@@ -163,7 +165,10 @@ def clip_mesh(verts_clip, triangles, ws=None, trivial=True) -> Clipped:
     outcodes(verts_clip, codes)
     counts = empty(ws, "clip.counts", len(triangles), np.uint8)
     cut = empty(ws, "clip.cut", len(triangles), np.bool_)
-    count_pieces(verts_clip, triangles, codes, bool(trivial), counts, cut)
+    trivial_pass(triangles, codes, bool(trivial), counts, cut)
+    straddling = np.flatnonzero(cut)
+    if len(straddling):  # a scene inside the view volume never compiles or runs the cutting
+        count_pieces(verts_clip, triangles, straddling, counts, cut)
     offsets = empty(ws, "scratch.per_triangle", len(triangles) + 1, np.int64)
     offsets[0] = 0
     np.cumsum(counts, out=offsets[1:])
@@ -175,15 +180,16 @@ def clip_mesh(verts_clip, triangles, ws=None, trivial=True) -> Clipped:
                   piece_clip=empty(ws, "clip.piece_clip", (p, 3, 4)),
                   piece_bary=empty(ws, "clip.piece_bary", (p, 3, 3)))
     write_whole(counts, cut, offsets, out.source, out.piece)
-    write_pieces(verts_clip, triangles, cut_ids, offsets, piece_offsets, *out)
+    if len(cut_ids):
+        write_pieces(verts_clip, triangles, cut_ids, offsets, piece_offsets, *out)
     return out
 
 
 @njit(cache=True, parallel=True)
-def count_pieces(verts_clip, triangles, codes, trivial, counts, cut):
-    """First pass: how many triangles each source triangle leaves after clipping, into
-    ``counts``, and whether they are pieces cut from it, into ``cut`` (``trivial`` False: no
-    trivial accept or reject, every triangle is cut)."""
+def trivial_pass(triangles, codes, trivial, counts, cut):
+    """First pass, from the outcodes alone: a triangle trivially rejected leaves none
+    (``counts`` 0), one trivially accepted leaves itself (1); the others straddle a plane
+    and are marked in ``cut`` for :func:`count_pieces` (``trivial`` False: every triangle)."""
     for t in prange(triangles.shape[0]):
         c0, c1, c2 = codes[triangles[t, 0]], codes[triangles[t, 1]], codes[triangles[t, 2]]
         if trivial and c0 & c1 & c2:  # all outside one plane: trivially rejected
@@ -191,15 +197,23 @@ def count_pieces(verts_clip, triangles, codes, trivial, counts, cut):
         elif trivial and (c0 | c1 | c2) == 0:  # all inside every plane: trivially accepted
             counts[t], cut[t] = 1, False
         else:
-            poly, bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
-            n = clip_one(verts_clip, triangles, np.int64(t), poly, bary, np.empty((MAX_POLY, 4)),
-                         np.empty((MAX_POLY, 3)))  # int64 as in write_pieces: one compiled clip_one, not two
-            counts[t], cut[t] = max(n - 2, 0), n >= 3
+            counts[t], cut[t] = 0, True
+
+
+@njit(cache=True, parallel=True)
+def count_pieces(verts_clip, triangles, straddling, counts, cut):
+    """Second pass, the ``straddling`` triangles only: how many triangles each leaves after
+    clipping, into ``counts``, and whether it leaves any (pieces cut from it), into ``cut``."""
+    for i in prange(straddling.shape[0]):
+        t = straddling[i]
+        poly, bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
+        n = clip_one(verts_clip, triangles, t, poly, bary, np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3)))
+        counts[t], cut[t] = max(n - 2, 0), n >= 3
 
 
 @njit(cache=True)
 def write_whole(counts, cut, offsets, source, piece):
-    """Second pass, triangles kept whole: their entry at ``offsets[t]`` names them, no piece."""
+    """Last pass, triangles kept whole: their entry at ``offsets[t]`` names them, no piece."""
     for t in range(counts.shape[0]):
         if counts[t] and not cut[t]:
             source[offsets[t]] = t
@@ -208,7 +222,7 @@ def write_whole(counts, cut, offsets, source, piece):
 
 @njit(cache=True, parallel=True)
 def write_pieces(verts_clip, triangles, cut_ids, offsets, piece_offsets, source, piece, piece_clip, piece_bary):
-    """Second pass, triangles that were cut: the pieces of source triangle ``t = cut_ids[i]``
+    """Last pass, triangles that were cut: the pieces of source triangle ``t = cut_ids[i]``
     at ``offsets[t]`` onward (rows ``piece_offsets[i]`` onward of the piece tables), as a fan
     around the clipped polygon's first vertex."""
     for i in prange(cut_ids.shape[0]):

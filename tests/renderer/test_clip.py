@@ -217,3 +217,22 @@ def test_triangles_kept_whole_are_named_not_copied(plane, out):
     assert sorted(clipped.piece[~whole].tolist()) == list(range(len(clipped.piece_clip)))
     for a, b in zip(clipped_corners(clipped, verts, tris), clip_triangles(verts, tris, trivial=False)):
         np.testing.assert_array_equal(a, b)
+
+
+def test_a_mesh_inside_the_view_volume_never_reaches_the_cutting_passes(monkeypatch):
+    """Every triangle trivially accepted or rejected: ``count_pieces`` and ``write_pieces`` (and
+    the clipping of a polygon they call) are not run, so a fresh process drawing such a scene
+    never compiles them; one straddling triangle runs both, once."""
+    import renderer.clip as clip
+
+    calls = []
+    for name in ("count_pieces", "write_pieces"):
+        original = getattr(clip, name)
+        monkeypatch.setattr(clip, name, lambda *a, _k=original, _n=name: calls.append(_n) or _k(*a))
+    verts = np.array([(0.1, 0.1, 0.1, 1.0), (0.3, -0.2, 0.0, 1.0), (-0.2, 0.4, -0.3, 1.0), (0.0, 0.0, -3.0, 1.0),
+                      (0.2, 0.0, -3.0, 1.0), (0.0, 0.2, -3.0, 1.0)])
+    inside_and_outside = np.array([[0, 1, 2], [3, 4, 5]], np.int64)
+    clipped = clip.clip_mesh(verts, inside_and_outside)
+    assert calls == [] and clipped.source.tolist() == [0] and len(clipped.piece_clip) == 0
+    clip.clip_mesh(verts, np.array([[0, 1, 2], [0, 1, 3]], np.int64))
+    assert calls == ["count_pieces", "write_pieces"]
