@@ -1,4 +1,5 @@
-"""float32 ``pow``, ``log2`` and ``exp2`` for the span shaders, written so LLVM can vectorise them.
+"""float32 ``pow``, ``log2`` and ``exp2`` for the span shaders, written so LLVM can vectorise them;
+and :func:`unorm8`, a linear value to the framebuffer's 8 bits.
 
 VTK's fragment shaders run in float32 on llvmpipe, 8 lanes at a time, and llvmpipe
 evaluates GLSL's ``pow(x, y)`` as ``exp2(y·log2(x))`` with polynomials. The library
@@ -65,3 +66,10 @@ def exp2_f32(y):
 def pow_f32(x, p):
     """x^p for float32 ``x`` > 0 (normal) and ``p`` ≥ 0, as ``exp2(p·log2(x))``; x^0 = 1."""
     return exp2_f32(np.float32(p) * log2_f32(x))
+
+
+@njit(cache=True, inline="always")
+def unorm8(c):
+    """Linear 0..1 → the framebuffer's 8 bits: ``round_half_even(clamp(c, 0, 1)·255)`` in float32."""
+    f = np.float32(min(max(c, 0.0), 1.0)) * np.float32(255.0)
+    return np.uint8(np.rint(f))

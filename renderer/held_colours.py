@@ -8,14 +8,23 @@ finely divided mesh has a span on every row it covers (a 328k-triangle sphere at
 142k spans of 1.8 pixels), so its colour was worked out again on each. Here it is worked
 out once per triangle that won a pixel (:func:`held_colours`), with the same float32
 normal and the same span kernel, and the rows copy it (:func:`renderer.shading.shade_rows_lit_spans`).
+A ``FACE_COLOUR`` triangle (flat under the opengl or classic model) holds its lit colour
+(:mod:`renderer.lit_colours`) in the same table.
+
+A frame whose every object is held (:func:`all_held`: flat shading under a headlight, the
+demo's icosphere, Menger sponges) needs nothing more: :func:`paint_rows` copies each pixel's
+colour from the table, with no walk along spans and no lighting code compiled (a fresh
+process drawing the level-5 icosphere skips the 7 s the span-lighting kernel takes to compile).
 """
 from __future__ import annotations
 
 import numpy as np
 
-from renderer.jit import njit
-from renderer.reflection.materials import PIXEL_FACE_NORMAL
-from renderer.reflection.registry import light_points, span_normal_only, store_span
+from renderer.float32_math import unorm8
+from renderer.jit import njit, prange
+from renderer.raster import EMPTY
+from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL
+from renderer.reflection.registry import light_points, span_normal_only, spans_normal_only, store_span
 from renderer.spans import F0, face_toward_viewer
 from renderer.workspace import empty
 
@@ -27,19 +36,30 @@ def held_per_triangle(o, materials, lights):
     return materials.shading_path[o] == PIXEL_FACE_NORMAL and span_normal_only(o, materials, lights)
 
 
+def all_held(materials, lights) -> bool:
+    """True when every object's triangles are held (:func:`held_per_triangle`, or
+    ``FACE_COLOUR``), for objects that :func:`renderer.shading.span_covers` (the same rule in
+    Python, for choosing :func:`paint_rows`)."""
+    return all(path == FACE_COLOUR or (path == PIXEL_FACE_NORMAL and spans_normal_only(o, materials, lights))
+               for o, path in enumerate(materials.shading_path))
+
+
 @njit(cache=True)
-def held_colours(frags, geo, materials, lights, points, colour, stored, out):
+def held_colours(frags, geo, materials, lights, lit, points, colour, stored, out):
     """The 8-bit colour of every clipped triangle of ``frags`` whose object is
-    :func:`held_per_triangle` into ``out`` (K, 3) uint8 (other rows are left as they are):
-    its plane normal turned toward the viewer, as float32 (the normal
-    :func:`renderer.spans.span_pixel` gives every pixel of a flat triangle), lit by the
-    object's span kernel and stored as 8 bits. An object's triangles are lit together, as
-    one run of points (``points`` (6, ≥ K), ``colour`` (3, ≥ K) float32 and ``stored`` (≥ K, 3)
-    uint8 scratch): one call,
-    whose loop runs 8 triangles at a time. The positions are not needed (the colour depends
-    on the normal alone) and are 0."""
+    :func:`held_per_triangle` or ``FACE_COLOUR`` into ``out`` (K, 3) uint8 (other rows are
+    left as they are). A ``FACE_COLOUR`` triangle's is its source triangle's lit colour,
+    primary + secondary (``lit.face``), as 8 bits. A held triangle's: its plane normal
+    turned toward the viewer, as float32 (the normal :func:`renderer.spans.span_pixel` gives
+    every pixel of a flat triangle), lit by the object's span kernel and stored as 8 bits.
+    An object's triangles are lit together, as one run of points (``points`` (6, ≥ K),
+    ``colour`` (3, ≥ K) float32 and ``stored`` (≥ K, 3) uint8 scratch): one call, whose loop
+    runs 8 triangles at a time. The positions are not needed (the colour depends on the
+    normal alone) and are 0."""
     count = frags.clip_source.shape[0]
     for o in range(materials.shading_path.shape[0]):
+        if materials.shading_path[o] == FACE_COLOUR:
+            face_colours(o, frags, geo, lit, out)
         if not held_per_triangle(o, materials, lights):
             continue
         n = 0
@@ -59,13 +79,43 @@ def held_colours(frags, geo, materials, lights, points, colour, stored, out):
                 n += 1
 
 
-def held_colour_table(frags, geo, materials, lights, ws=None) -> np.ndarray:
+@njit(cache=True, inline="always")
+def face_colours(o, frags, geo, lit, out):
+    """Object ``o``'s FACE_COLOUR triangles: their lit colour as 8 bits into ``out`` (K, 3)."""
+    for k in range(frags.clip_source.shape[0]):
+        s = frags.clip_source[k]
+        if geo.tri_object[s] == o:
+            out[k, 0] = unorm8(lit.face[s, 0] + lit.face[s, 3])
+            out[k, 1] = unorm8(lit.face[s, 1] + lit.face[s, 4])
+            out[k, 2] = unorm8(lit.face[s, 2] + lit.face[s, 5])
+
+
+def held_colour_table(frags, geo, materials, lights, lit, ws=None) -> np.ndarray:
     """(K, 3) uint8 (:func:`held_colours`) for the K clipped triangles of ``frags``; the kernel
-    runs only when some object is flat (``PIXEL_FACE_NORMAL``). Scratch in workspace ``ws``."""
+    runs only when some object is flat (``PIXEL_FACE_NORMAL`` or ``FACE_COLOUR``). Scratch in
+    workspace ``ws``."""
     count = len(frags.clip_source)
     out = np.zeros((count, 3), np.uint8)
-    if any(path == PIXEL_FACE_NORMAL for path in materials.shading_path):
-        held_colours(frags, geo, materials, lights, empty(ws, "held.points", (6, max(count, 1)), np.float32),
+    if any(path in (PIXEL_FACE_NORMAL, FACE_COLOUR) for path in materials.shading_path):
+        held_colours(frags, geo, materials, lights, lit, empty(ws, "held.points", (6, max(count, 1)), np.float32),
                      empty(ws, "held.colour", (3, max(count, 1)), np.float32),
                      empty(ws, "held.stored", (max(count, 1), 3), np.uint8), out)
     return out
+
+
+@njit(cache=True, parallel=True)
+def paint_rows(tri_index, held, background, n_bands, rgb):
+    """Shading of a frame whose every object is held (:func:`all_held`): each pixel of
+    ``rgb`` (H, W, 3) uint8 gets its triangle's row of ``held`` (K, 3) uint8, an empty one the
+    8-bit ``background``. The bytes of :func:`renderer.shading.shade_rows_lit_spans`, which
+    copies the same rows along spans. Rows are dealt to ``n_bands`` bands as there
+    (:mod:`renderer.bands`); each pixel is written once."""
+    height, width = tri_index.shape
+    for band in prange(n_bands):
+        for row in range(band, height, n_bands):
+            for col in range(width):
+                k = tri_index[row, col]
+                if k == EMPTY:
+                    rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = background[0], background[1], background[2]
+                else:
+                    rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = held[k, 0], held[k, 1], held[k, 2]

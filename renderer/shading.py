@@ -31,7 +31,8 @@ import numpy as np
 from renderer.jit import njit, prange
 
 from renderer.bands import shading_bands
-from renderer.held_colours import held_colour_table, held_per_triangle
+from renderer.float32_math import unorm8
+from renderer.held_colours import all_held, held_colour_table, paint_rows
 from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
@@ -39,13 +40,6 @@ from renderer.reflection.registry import (light_points, reflect, reflect_span, s
 from renderer.spans import face_toward_viewer, span_points, span_setup
 from renderer.texture_sampling import modulate_texels, sample_texture
 from renderer.workspace import thread_workspace
-
-
-@njit(cache=True, inline="always")
-def unorm8(c):
-    """Linear 0..1 → the framebuffer's 8 bits: ``round_half_even(clamp(c, 0, 1)·255)`` in float32."""
-    f = np.float32(min(max(c, 0.0), 1.0)) * np.float32(255.0)
-    return np.uint8(np.rint(f))
 
 
 @njit(cache=True)
@@ -338,9 +332,9 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     comes from its own triangle's span set-up either way, and the model's loop computes each
     pixel alone. But a run of thin triangles (one or two pixels a row: 1,024-segment
     cylinders, large meshes) lights its pixels 8 at a time instead of one by one in scalar
-    code. ``inputs``: ``(materials, lights, lit)``; ``scratch``: :func:`span_scratch`,
+    code. ``inputs``: ``(materials, lights)``; ``scratch``: :func:`span_scratch`,
     the points at the pixels' own columns."""
-    materials, lights, lit = inputs
+    materials, lights = inputs
     points, colour, _ = scratch
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
@@ -464,17 +458,17 @@ def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands
 
 
 @njit(cache=True, parallel=True)
-def shade_rows_lit_spans(frags, geo, materials, lights, lit, held, background, n_bands, rgb):
-    """:func:`shade_rows` for a frame whose every object :func:`span_covers`, three ways: runs of
+def shade_rows_lit_spans(frags, geo, materials, lights, held, background, n_bands, rgb):
+    """:func:`shade_rows` for a frame whose every object :func:`span_covers`, two ways: runs of
     one object lit per pixel (:func:`shade_lit_run`); colours held per triangle (``held`` (K, 3)
-    uint8, :mod:`renderer.held_colours`) copied along their spans; FACE_COLOUR triangles'
-    colours (:func:`hold_face_colour`). The same bytes as :func:`shade_rows`, which takes the
-    same ways span by span, without the pixel-by-pixel models and textures: a frame that
-    needs no more compiles no more (:func:`shade` chooses). A fresh process drawing
-    icosphere level 5 compiled its shading in 8 s instead of 27.5 s (CPU)."""
+    uint8, :mod:`renderer.held_colours`: flat under a headlight, and FACE_COLOUR) copied along
+    their spans. The same bytes as :func:`shade_rows`, which takes the same ways span by
+    span, without the pixel-by-pixel models and textures: a frame that needs no more compiles
+    no more (:func:`shade` chooses). A fresh process drawing a phong icosphere compiled its
+    shading in 8 s instead of 27.5 s (CPU)."""
     height, width = frags.tri_index.shape
     for band in prange(n_bands):
-        inputs = (materials, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
+        inputs = (materials, lights)  # made inside the parallel loop: numba passes no tuple into it
         scratch = span_scratch(width)
         for row in range(band, height, n_bands):
             col = 0
@@ -484,10 +478,8 @@ def shade_rows_lit_spans(frags, geo, materials, lights, lit, held, background, n
                     fill_colour(rgb, row, col, end, background)
                 elif lit_per_pixel(object_of(k, frags, geo), materials, lights):
                     end = shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb)
-                elif held_per_triangle(object_of(k, frags, geo), materials, lights):
+                else:  # held per triangle, or FACE_COLOUR
                     fill_colour(rgb, row, col, end, held[k])
-                else:  # FACE_COLOUR
-                    hold_face_colour(frags.clip_source[k], row, col, end, lit, rgb)
                 col = end
 
 
@@ -500,8 +492,11 @@ def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, 
     height = frags.tri_index.shape[0]
     n_bands = shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height))
     if spans and spans_cover_all(inputs.materials, inputs.textures, inputs.lights):
-        held = held_colour_table(frags, geo, inputs.materials, inputs.lights, thread_workspace())
-        shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, inputs.lit, held, background, n_bands, rgb)
+        held = held_colour_table(frags, geo, inputs.materials, inputs.lights, inputs.lit, thread_workspace())
+        if all_held(inputs.materials, inputs.lights):
+            paint_rows(frags.tri_index, held, background, n_bands, rgb)
+        else:
+            shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, held, background, n_bands, rgb)
     else:
         shade_rows(frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, background, n_bands,
                    bool(spans), rgb)

@@ -23,8 +23,8 @@ from renderer.reflection.classic_model import classic_lighting
 from renderer.reflection.materials import Materials
 from renderer.reflection.opengl_model import opengl_lighting
 from renderer.reflection.vtk_model import vtk_lighting
-from renderer.reflection.vtk_spans import (store8, vtk_normal_only, vtk_point_colours, vtk_span, vtk_span_applies,
-                                          vtk_span_colours, vtk_spans_apply)
+from renderer.reflection.vtk_spans import (store8, vtk_normal_only, vtk_normals_only, vtk_point_colours, vtk_span,
+                                          vtk_span_applies, vtk_span_colours, vtk_spans_apply)
 
 REFLECTION_MODELS = {m.name: m for m in (vtk_model.MODEL, opengl_model.MODEL, classic_model.MODEL)}
 """Model name (the scene's ``model``) → its :class:`~renderer.reflection.materials.ReflectionModel`."""
@@ -65,6 +65,11 @@ def span_normal_only(o, materials, lights):
     """True when the span kernel's colour depends on the normal alone (one colour for a
     span with a constant normal)."""
     return vtk_normal_only(o, materials, lights)
+
+
+def spans_normal_only(o, materials, lights) -> bool:
+    """:func:`span_normal_only` in Python, for an object that :func:`spans_apply`."""
+    return bool(vtk_normals_only(o, materials, lights))
 
 
 @njit(cache=True, inline="always")

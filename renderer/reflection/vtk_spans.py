@@ -51,6 +51,11 @@ def vtk_normal_only(o, materials, lights):
     return vtk_complexity(o, materials, lights) <= HEADLIGHT_ONLY
 
 
+def vtk_normals_only(o, materials, lights) -> bool:
+    """:func:`vtk_normal_only` in Python (for choosing a kernel before shading)."""
+    return (lights.complexity if materials.lit[o] else UNLIT) <= HEADLIGHT_ONLY
+
+
 ROUNDER = np.float32(2.0 ** 23)
 
 

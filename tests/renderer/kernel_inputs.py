@@ -1,4 +1,5 @@
-"""Small hand-made inputs for the renderer's kernels: a light set and one-object material tables.
+"""Inputs for the renderer's kernels: a light set and one-object material tables made by
+hand, and the tables of every preset (:func:`preset_tables`).
 
 Not a test file: the kernel tests build their :class:`renderer.lights.ViewLights` and
 :class:`renderer.reflection.materials.Materials` here, from a few plain values.
@@ -42,3 +43,22 @@ def materials(ambient, diffuse, specular, power, model="vtk", lit=True, path=PIX
     return Materials(model=np.array([CODES[model]]), shading_path=np.array([path]), lit=np.array([lit]),
                      ambient=row(ambient), diffuse=row(diffuse), specular=row(specular),
                      power=np.array([float(power)]), opacity=np.array([float(opacity)]))
+
+
+def preset_tables():
+    """(label, materials, textures, lights) of every preset under every shading and model (the
+    tables :func:`renderer.render` hands the shading kernels)."""
+    from lab.loading import load_scene
+    from lab.presets import SCENES_DIR
+    from renderer.camera import world_to_view
+    from renderer.lights import view_lights as lights_in_view
+    from renderer.reflection.registry import material_table
+    from renderer.texture_sampling import texture_table
+
+    for path in sorted(SCENES_DIR.glob("*.toml")):
+        scene = load_scene(path)
+        for shading in (None, "flat", "gouraud", "phong"):
+            for model in (None, "opengl", "classic"):
+                s = scene.with_overrides(shading=shading, model=model)
+                lights = lights_in_view(s.lights, s.camera, world_to_view(s.camera), s.render)
+                yield f"{path.stem}/{shading}/{model}", material_table(s), texture_table(s), lights

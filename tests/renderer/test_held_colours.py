@@ -11,7 +11,13 @@ from lab.matrices import model_matrix
 from lab.scene import Camera, Image, Light, Material, Scene, SceneObject, headlight
 from lab.shapes import icosphere
 from renderer import RenderOptions, render
+from renderer.held_colours import all_held, held_per_triangle, paint_rows
+from renderer.jit import njit
 from renderer.pipeline import render_stages
+from renderer.reflection.materials import FACE_COLOUR
+from renderer.shading import spans_cover_all
+
+from .kernel_inputs import preset_tables
 
 SCENE_LIGHT = Light(kind="scene", position=(3.0, 4.0, 5.0))
 
@@ -54,3 +60,61 @@ def test_held_and_per_pixel_objects_side_by_side_keep_the_bytes_of_pixel_by_pixe
     """A flat sphere (held per triangle) beside a phong one (lit per pixel) under a headlight."""
     scene = balls((headlight(),), shading=("flat", "phong"))
     np.testing.assert_array_equal(render(scene).rgb, render(scene, RenderOptions(spans=False)).rgb)
+
+
+def mixed_balls(lights, models):
+    """:func:`balls`, flat, the left and right spheres under the reflection ``models`` given
+    (opengl's flat triangles are FACE_COLOUR, vtk's PIXEL_FACE_NORMAL)."""
+    scene = balls(lights)
+    objects = tuple(replace(o, material=replace(o.material, model=m)) for o, m in zip(scene.objects, models))
+    return replace(scene, objects=objects)
+
+
+@njit
+def held_by_kernel(materials, lights):
+    return [held_per_triangle(o, materials, lights) or materials.shading_path[o] == FACE_COLOUR
+            for o in range(materials.model.shape[0])]
+
+
+def test_the_choice_of_paint_rows_in_python_agrees_with_the_kernels_own_rule():
+    """``all_held`` (Python) says yes exactly when every object is held per triangle by the kernels'
+    own rule or FACE_COLOUR, on every preset × shading × model the span kernels cover; both occur."""
+    answers = set()
+    for label, mats, textures, lights in preset_tables():
+        if spans_cover_all(mats, textures, lights):
+            answer = all_held(mats, lights)
+            assert answer == all(held_by_kernel(mats, lights)), label
+            answers.add(answer)
+    assert answers == {True, False}
+
+
+@pytest.mark.parametrize("lights, kernel", [((headlight(),), "paint_rows"), ((SCENE_LIGHT,), "shade_rows_lit_spans")],
+                         ids=["headlight", "scene-light"])
+def test_face_colour_triangles_beside_held_or_lit_ones_keep_the_bytes_of_pixel_by_pixel_shading(
+        lights, kernel, monkeypatch):
+    """A FACE_COLOUR sphere (opengl, flat) beside a vtk one: under a headlight both are held and
+    the frame is painted from the table; under a scene light the vtk sphere is lit per pixel and
+    the FACE_COLOUR one copied from the table along its spans. Both: the plain path's bytes."""
+    import renderer.shading as shading
+
+    scene = mixed_balls(lights, ("opengl", "vtk"))
+    plain = render(scene, RenderOptions(spans=False))
+    calls = []
+    for name in ("shade_rows", "shade_rows_lit_spans", "paint_rows"):
+        original = getattr(shading, name)
+        monkeypatch.setattr(shading, name, lambda *a, _k=original, _n=name: calls.append(_n) or _k(*a))
+    frame = render(scene)
+    assert calls == [kernel]
+    assert len(np.unique(plain.rgb[plain.coverage], axis=0)) > 100
+    np.testing.assert_array_equal(frame.rgb, plain.rgb)
+
+
+def test_paint_rows_gives_each_pixel_its_triangles_row_and_empty_ones_the_background():
+    tri_index = np.array([[-1, 0, 0, 2], [1, 1, -1, 2]], np.int32)
+    held = np.array([[10, 20, 30], [40, 50, 60], [70, 80, 90]], np.uint8)
+    background = np.array([1, 2, 3], np.uint8)
+    for bands in (1, 2):
+        rgb = np.zeros((2, 4, 3), np.uint8)
+        paint_rows(tri_index, held, background, bands, rgb)
+        expected = np.where((tri_index < 0)[..., None], background, held[np.maximum(tri_index, 0)])
+        np.testing.assert_array_equal(rgb, expected)

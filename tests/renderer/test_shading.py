@@ -16,7 +16,7 @@ from renderer.shading import (Fragments, ShadingInputs, face_normals, fragment_w
                               span_covers, span_tcoords, spans_cover_all, to_8bit)
 from renderer.texture_sampling import NEAREST, REPEAT, Textures, pack_lanes
 
-from .kernel_inputs import materials, view_lights
+from .kernel_inputs import materials, preset_tables, view_lights
 
 BACKGROUND = np.array([10, 20, 30], np.uint8)
 UNTEXTURED = Textures(np.array([False]), np.zeros(1, np.int64), np.ones(1, np.int64), np.ones(1, np.int64),
@@ -214,25 +214,6 @@ def test_to_8bit_rounds_half_to_even_in_float32():
 
 # --------------------------------------------------------------------------- which kernel shades a frame
 
-def preset_tables():
-    """(label, materials, textures, lights) of every preset under every shading and model (the
-    tables :func:`renderer.render` hands the shading kernels)."""
-    from lab.loading import load_scene
-    from lab.presets import SCENES_DIR
-    from renderer.camera import world_to_view
-    from renderer.lights import view_lights as lights_in_view
-    from renderer.reflection.registry import material_table
-    from renderer.texture_sampling import texture_table
-
-    for path in sorted(SCENES_DIR.glob("*.toml")):
-        scene = load_scene(path)
-        for shading in (None, "flat", "gouraud", "phong"):
-            for model in (None, "opengl", "classic"):
-                s = scene.with_overrides(shading=shading, model=model)
-                lights = lights_in_view(s.lights, s.camera, world_to_view(s.camera), s.render)
-                yield f"{path.stem}/{shading}/{model}", material_table(s), texture_table(s), lights
-
-
 @njit
 def covered_by_kernel(materials, textures, lights):
     return [span_covers(o, materials, textures, lights) for o in range(materials.model.shape[0])]
@@ -249,20 +230,26 @@ def test_the_kernel_choice_in_python_agrees_with_the_kernels_own_rule():
     assert answers == {True, False}
 
 
-def test_a_frame_the_span_kernels_cover_never_reaches_the_general_kernel(monkeypatch):
-    """An icosphere under a headlight (vtk model, untextured) is shaded by ``shade_rows_lit_spans``
-    alone; a textured sphere by the general ``shade_rows``. Same bytes as pixel by pixel."""
+def test_each_frame_reaches_only_the_kernel_its_objects_need(monkeypatch):
+    """A flat icosphere under a headlight (every triangle one held colour) is painted from the
+    table by ``paint_rows``; under a scene light (lit per pixel) by ``shade_rows_lit_spans``; a
+    textured sphere by the general ``shade_rows``. Each gives the bytes of pixel-by-pixel shading."""
+    from dataclasses import replace
+
     import renderer.shading as shading
     from lab.framing import shape_scene
     from lab.loading import load_scene
+    from lab.scene import Light
     from renderer import RenderOptions, render
 
-    scene = shape_scene("icosphere:level=2")
-    plain = render(scene, RenderOptions(spans=False)).rgb
+    flat = shape_scene("icosphere:level=2").with_overrides(shading="flat")
+    scenes = [flat, replace(flat, lights=(Light(kind="scene", position=(3.0, 4.0, 5.0)),)),
+              load_scene("textured-sphere")]
+    plain = [render(scene, RenderOptions(spans=False)).rgb for scene in scenes]
     calls = []
-    for name in ("shade_rows", "shade_rows_lit_spans"):
+    for name in ("shade_rows", "shade_rows_lit_spans", "paint_rows"):
         kernel = getattr(shading, name)
         monkeypatch.setattr(shading, name, lambda *a, _k=kernel, _n=name: calls.append(_n) or _k(*a))
-    np.testing.assert_array_equal(render(scene).rgb, plain)
-    render(load_scene("textured-sphere"))
-    assert calls == ["shade_rows_lit_spans", "shade_rows"]
+    for scene, expected in zip(scenes, plain):
+        np.testing.assert_array_equal(render(scene).rgb, expected)
+    assert calls == ["paint_rows", "shade_rows_lit_spans", "shade_rows"]
