@@ -178,17 +178,22 @@ class RasterRules(NamedTuple):
     cull_back: bool = False
 
 
-def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray) -> SceneGeometry:
+def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray, ws=None) -> SceneGeometry:
     """Stages 1–3 for every object: model → world → view → clip, vertex by vertex
-    (:func:`renderer.transform.transform_vertices`, each object into its rows)."""
+    (:func:`renderer.transform.transform_vertices`, each object into its rows). With a
+    workspace ``ws`` the tables live in it (a 327,680-triangle sphere's are 28 MB, faulted
+    in page by page when allocated afresh each frame)."""
     objects = scene.objects
     n_points = [obj.mesh.n_points for obj in objects]
+    n_triangles = [obj.mesh.n_triangles for obj in objects]
     starts = np.concatenate([[0], np.cumsum(n_points)]).astype(np.int64)
-    n = int(starts[-1])
-    verts_view, verts_clip, normals = np.empty((n, 3)), np.empty((n, 4)), np.empty((n, 3))
-    tcoords = np.zeros((n, 2))
+    firsts = np.concatenate([[0], np.cumsum(n_triangles)]).astype(np.int64)
+    n, t = int(starts[-1]), int(firsts[-1])
+    verts_view, verts_clip = empty(ws, "geometry.verts_view", (n, 3)), empty(ws, "geometry.verts_clip", (n, 4))
+    normals, tcoords = empty(ws, "geometry.normals_view", (n, 3)), empty(ws, "geometry.tcoords", (n, 2))
+    tri_object, vert_object = empty(ws, "geometry.tri_object", t, np.int64), empty(ws, "geometry.vert_object", n, np.int64)
     no_normals = np.empty((0, 3))
-    for obj, a, b in zip(objects, starts[:-1], starts[1:]):
+    for i, (obj, a, b) in enumerate(zip(objects, starts[:-1], starts[1:])):
         model_to_view = obj.model_to_world @ world_to_view_m
         mesh = obj.mesh
         has_normals = mesh.point_normals is not None
@@ -196,18 +201,24 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
                            np.ascontiguousarray(mesh.point_normals, dtype=np.float64) if has_normals else no_normals,
                            normal_matrix(model_to_view) if has_normals else np.eye(3),
                            verts_view[a:b], verts_clip[a:b], normals[a:b])
-        if mesh.tcoords is not None:
-            tcoords[a:b] = mesh.tcoords
+        tcoords[a:b] = mesh.tcoords if mesh.tcoords is not None else 0.0
+        vert_object[a:b] = i
+        tri_object[firsts[i]:firsts[i + 1]] = i
     if len(objects) == 1:
         triangles = np.ascontiguousarray(objects[0].mesh.triangles, dtype=np.int64)
     else:
-        triangles = np.concatenate([obj.mesh.triangles + a for obj, a in zip(objects, starts[:-1])])
-    n_triangles = [obj.mesh.n_triangles for obj in objects]
-    owners = np.arange(len(objects), dtype=np.int64)
-    normals_face = np.empty((len(triangles), 3))
+        triangles = empty(ws, "geometry.triangles", (t, 3), np.int64)
+        for obj, a, first, last in zip(objects, starts[:-1], firsts[:-1], firsts[1:]):
+            np.add(obj.mesh.triangles, a, out=triangles[first:last])
+    normals_face = empty(ws, "geometry.face_normals", (t, 3))
     face_normals(verts_view, triangles, normals_face)
-    return SceneGeometry(verts_view, verts_clip, normals, triangles, np.repeat(owners, n_triangles),
-                         np.repeat(owners, n_points), tcoords, normals_face, bool(scene.camera.parallel))
+    return SceneGeometry(verts_view, verts_clip, normals, triangles, tri_object, vert_object, tcoords, normals_face,
+                         bool(scene.camera.parallel))
+
+
+def copied(geo: SceneGeometry) -> SceneGeometry:
+    """``geo`` with every table copied (out of the workspace, for a caller to keep)."""
+    return SceneGeometry(*(v.copy() if isinstance(v, np.ndarray) else v for v in geo))
 
 
 class Stages(NamedTuple):
@@ -286,9 +297,9 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     w2v = world_to_view(cam)
     near_far = cam.clipping_range if cam.clipping_range is not None else clipping_range(cam, scene.world_bounds())
     v2c = view_to_clip(cam, width / height, near_far)
-    geo = transform_scene(scene, w2v, v2c)
-
     ws = thread_workspace()
+    geo = transform_scene(scene, w2v, v2c, ws)
+
     lean = options.lean
     clipped = clip_and_map(geo, width, height, ws, trivial=lean)
     hidden = scene.render.hidden_surface
@@ -325,6 +336,6 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     fixed = tables.tri_fixed
     area = ((fixed[:, 1, 0] - fixed[:, 0, 0]) * (fixed[:, 2, 1] - fixed[:, 0, 1])
             - (fixed[:, 2, 0] - fixed[:, 0, 0]) * (fixed[:, 1, 1] - fixed[:, 0, 1]))
-    stages = Stages(geo, tables.tri_window, fixed, tables.clip_source, area > 0,
+    stages = Stages(copied(geo), tables.tri_window, fixed, tables.clip_source, area > 0,
                     translucent.copy(), frame.depth, window_rows_to_image_rows(triangle).copy())
     return frame, stages

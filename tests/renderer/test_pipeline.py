@@ -367,3 +367,33 @@ def test_a_large_mesh_renders_in_memory_proportionate_to_its_triangles():
         m = json.loads(done.stdout.strip().splitlines()[-1])
         per_triangle[path] = m["peak_kib"] * 1024 / m["triangles"]
     assert per_triangle["lean"] < 200 < 400 < per_triangle["plain"], per_triangle
+
+
+def test_the_scene_tables_live_in_the_workspace_and_what_render_stages_returns_is_a_copy():
+    """Stages 1–3 write into the workspace (the same memory frame after frame: no page faults);
+    the geometry ``render_stages`` hands back is its own, untouched by the next frame; with
+    several objects the tables hold every object's rows, its triangles shifted to them."""
+    from renderer.camera import view_to_clip, world_to_view
+    from renderer.pipeline import render_stages, transform_scene
+    from renderer.workspace import Workspace
+
+    scene = load_scene("translucent-three")  # three objects
+    assert len(scene.objects) == 3
+    w, h = scene.image.size
+    ws = Workspace()
+    args = (scene, world_to_view(scene.camera), view_to_clip(scene.camera, w / h, (NEAR, FAR)))
+    first, again, fresh = transform_scene(*args, ws), transform_scene(*args, ws), transform_scene(*args)
+    for a, b, c in zip(first[:-1], again[:-1], fresh[:-1]):
+        assert np.shares_memory(a, b) or a is b
+        np.testing.assert_array_equal(b, c)
+    starts = np.cumsum([0] + [o.mesh.n_points for o in scene.objects])
+    np.testing.assert_array_equal(fresh.triangles, np.concatenate([o.mesh.triangles + a for o, a in
+                                                                   zip(scene.objects, starts)]))
+    np.testing.assert_array_equal(fresh.tri_object, np.repeat([0, 1, 2], [o.mesh.n_triangles for o in scene.objects]))
+
+    _, stages = render_stages(scene)
+    kept = [np.array(v, copy=True) for v in stages.geometry[:-1]]
+    render(scene.with_overrides(size=(64, 48)))
+    render(load_scene("cube"))
+    for held, now in zip(kept, stages.geometry[:-1]):
+        np.testing.assert_array_equal(held, now)
