@@ -12,8 +12,10 @@ Not a test: a command. What is measured, and how:
   of the per-pair ratios ours/VTK (< 1: ours is faster).
 - **Peak memory** (:func:`peak_memory`). Each renderer draws the scene in a child process
   of its own: it first warms up on a tiny scene (kernels loaded; VTK's OpenGL context and
-  shaders made), then loads the scene, notes its resident set (the baseline: interpreter,
-  libraries and the scene's own arrays), resets the kernel's high-water mark
+  shaders made), then loads the scene, hands the free memory of its heap back to the system
+  (``malloc_trim``: our renderer keeps freed memory for the next frame,
+  :mod:`renderer.workspace`, and loading the scene freed some), notes its resident set (the
+  baseline: interpreter, libraries and the scene's own arrays), resets the kernel's high-water mark
   (``/proc/self/clear_refs``) and draws two frames — for VTK building the plotter (its
   polydata and GPU buffers), rendering and reading back. Reported: the high-water mark
   minus the baseline, the memory drawing the scene took, in MiB.
@@ -27,6 +29,8 @@ Not a test: a command. What is measured, and how:
 """
 from __future__ import annotations
 
+import ctypes
+import ctypes.util
 import json
 import os
 import statistics
@@ -128,6 +132,15 @@ def _status_kib(field: str) -> int:
     raise RuntimeError(f"no {field} in /proc/self/status")
 
 
+def _give_back_free_memory() -> None:
+    """glibc's ``malloc_trim(0)``: free heap memory back to the system, so that the resident
+    set counts live memory only (nothing where the C library is not glibc)."""
+    try:
+        ctypes.CDLL(ctypes.util.find_library("c")).malloc_trim(0)
+    except (OSError, AttributeError, TypeError):
+        pass
+
+
 def _measure_in_this_process(side: str, name: str, size) -> dict:
     """The child's side of :func:`peak_memory`: baseline and high-water mark, in KiB."""
     import gc
@@ -148,6 +161,7 @@ def _measure_in_this_process(side: str, name: str, size) -> dict:
     draw(bench_scene(TINY, (64, 64)))
     scene = bench_scene(name, size)
     gc.collect()
+    _give_back_free_memory()
     baseline = _status_kib("VmRSS")
     refs = os.open("/proc/self/clear_refs", os.O_WRONLY)  # "5": the high-water mark starts again from here
     os.write(refs, b"5")

@@ -5,13 +5,56 @@ operating system hands out new pages, and each is faulted in on first touch. A
 :class:`Workspace` lends the pipeline the same memory every frame when the sizes fit.
 :func:`renderer.render` keeps one per thread; everything it returns is copied out, so a
 :class:`~lab.frame.Frame` never shares memory with the workspace.
+
+What a frame returns is new memory each time (a 1024² frame: rgb 3 MB, depth 8 MB,
+coverage 1 MB). glibc's ``malloc`` serves blocks that large with a fresh ``mmap`` and gives
+the top of its heap back to the system once more than a threshold of it is free; both
+thresholds move as the process runs, so whether the next frame's outputs get pages faulted
+in afresh depended on what the process did before (measured in ``scanlab bench``, VTK's
+frames alternating with ours: 1,500 faults a frame, 6 MB, on the level-5 icosphere at
+1024², 14.1 ms a frame against 7.2 ms without them). :func:`keep_freed_memory`, run when
+this module is imported, fixes the thresholds so that freed frames are served again from
+the heap: blocks up to 32 MiB come from it, and up to 256 MiB of free heap is kept.
+Thresholds the user set (``MALLOC_MMAP_THRESHOLD_``, ``MALLOC_TRIM_THRESHOLD_``) are kept.
 """
 from __future__ import annotations
 
+import ctypes
+import ctypes.util
 import math
+import os
 import threading
 
 import numpy as np
+
+M_TRIM_THRESHOLD, M_MMAP_THRESHOLD = -1, -3
+"""``mallopt`` parameters (glibc's ``malloc.h``)."""
+
+KEPT_FREE = 256 << 20
+"""Free memory at the top of the heap kept rather than given back (bytes)."""
+
+FROM_HEAP = 32 << 20
+"""Blocks up to this size come from the heap, not from a fresh ``mmap`` (glibc's largest
+dynamic threshold on 64-bit systems)."""
+
+
+def keep_freed_memory() -> bool:
+    """Set glibc's trim and mmap thresholds (see the module docstring); False where the C
+    library has no ``mallopt`` (not glibc) or it refuses."""
+    name = ctypes.util.find_library("c")
+    try:
+        mallopt = ctypes.CDLL(name).mallopt
+    except (OSError, AttributeError, TypeError):
+        return False
+    done = True
+    if "MALLOC_TRIM_THRESHOLD_" not in os.environ:
+        done &= mallopt(M_TRIM_THRESHOLD, KEPT_FREE) == 1
+    if "MALLOC_MMAP_THRESHOLD_" not in os.environ:
+        done &= mallopt(M_MMAP_THRESHOLD, FROM_HEAP) == 1
+    return done
+
+
+KEEPS_FREED_MEMORY = keep_freed_memory()
 
 
 class Workspace:
