@@ -29,6 +29,7 @@ from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
 from renderer.raster import BATCH, IndexedTriangles, frame_depth_and_coverage, rasterize_visibility, weight_planes
+from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL
 from renderer.reflection.registry import material_table
 from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
 from renderer.texture_sampling import texture_table
@@ -178,11 +179,14 @@ class RasterRules(NamedTuple):
     cull_back: bool = False
 
 
-def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray, ws=None) -> SceneGeometry:
+def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray, ws=None,
+                    with_face_normals: bool = True) -> SceneGeometry:
     """Stages 1–3 for every object: model → world → view → clip, vertex by vertex
     (:func:`renderer.transform.transform_vertices`, each object into its rows). With a
     workspace ``ws`` the tables live in it (a 327,680-triangle sphere's are 28 MB, faulted
-    in page by page when allocated afresh each frame)."""
+    in page by page when allocated afresh each frame). ``with_face_normals`` False leaves
+    ``face_normals`` undefined, for a frame no object of which reads them
+    (:func:`needs_face_normals`)."""
     objects = scene.objects
     n_points = [obj.mesh.n_points for obj in objects]
     n_triangles = [obj.mesh.n_triangles for obj in objects]
@@ -211,9 +215,16 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
         for obj, a, first, last in zip(objects, starts[:-1], firsts[:-1], firsts[1:]):
             np.add(obj.mesh.triangles, a, out=triangles[first:last])
     normals_face = empty(ws, "geometry.face_normals", (t, 3))
-    face_normals(verts_view, triangles, normals_face)
+    if with_face_normals:
+        face_normals(verts_view, triangles, normals_face)
     return SceneGeometry(verts_view, verts_clip, normals, triangles, tri_object, vert_object, tcoords, normals_face,
                          bool(scene.camera.parallel))
+
+
+def needs_face_normals(materials) -> bool:
+    """Whether some object's shading path reads its triangles' plane normals: flat shading,
+    lit per pixel (``PIXEL_FACE_NORMAL``) or per triangle (``FACE_COLOUR``)."""
+    return bool(np.isin(materials.shading_path, (PIXEL_FACE_NORMAL, FACE_COLOUR)).any())
 
 
 def copied(geo: SceneGeometry) -> SceneGeometry:
@@ -298,7 +309,8 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     near_far = cam.clipping_range if cam.clipping_range is not None else clipping_range(cam, scene.world_bounds())
     v2c = view_to_clip(cam, width / height, near_far)
     ws = thread_workspace()
-    geo = transform_scene(scene, w2v, v2c, ws)
+    materials = material_table(scene)
+    geo = transform_scene(scene, w2v, v2c, ws, with_face_normals=keep_stages or needs_face_normals(materials))
 
     lean = options.lean
     clipped = clip_and_map(geo, width, height, ws, trivial=lean)
@@ -307,7 +319,6 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
         clipped = clipped.take(painter_order(clipped.written_out().tri_window))
     rules = RasterRules(options.fill_rule, depth_test=hidden == "zbuffer", cull_back=scene.render.cull_backfaces)
     # opaque objects through the z-buffer; translucent ones (opacity < 1) afterwards, as fragment lists
-    materials = material_table(scene)
     translucent = (materials.opacity[geo.tri_object[clipped.clip_source]] < 1.0 if (materials.opacity < 1.0).any()
                    else np.zeros(clipped.count, np.bool_))
     opaque = clipped.take(~translucent) if translucent.any() else clipped

@@ -397,3 +397,30 @@ def test_the_scene_tables_live_in_the_workspace_and_what_render_stages_returns_i
     render(load_scene("cube"))
     for held, now in zip(kept, stages.geometry[:-1]):
         np.testing.assert_array_equal(held, now)
+
+
+@pytest.mark.parametrize("shading, model, computed", [("phong", "vtk", False), ("gouraud", "vtk", False),
+                                                      ("flat", "vtk", True), ("flat", "opengl", True)])
+def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, model, computed, monkeypatch):
+    """Flat shading reads each triangle's plane normal (lit per pixel under the vtk model, per
+    triangle under opengl); phong and gouraud (vertex normals) do not, and their frames skip
+    working them out. Either way the frame has the bytes of one that worked them out, with the
+    workspace's table poisoned first (stale normals from an earlier frame cannot hide a frame
+    that reads them unworked); ``render_stages`` always has them."""
+    import renderer.pipeline as pipeline
+    from renderer.pipeline import render_stages
+    from renderer.workspace import thread_workspace
+
+    scene = load_scene("textbook-sphere").with_overrides(shading=shading, model=model)
+    triangles = sum(o.mesh.n_triangles for o in scene.objects)
+    monkeypatch.setattr(pipeline, "needs_face_normals", lambda materials: True)
+    expected = render(scene).rgb
+    monkeypatch.undo()
+    calls = []
+    original = pipeline.face_normals
+    monkeypatch.setattr(pipeline, "face_normals", lambda *a: calls.append(1) or original(*a))
+    thread_workspace().array("geometry.face_normals", (triangles, 3)).fill(np.nan)
+    np.testing.assert_array_equal(render(scene).rgb, expected)
+    assert bool(calls) == computed
+    _, stages = render_stages(scene)
+    assert np.allclose(np.linalg.norm(stages.geometry.face_normals, axis=1), 1.0)
