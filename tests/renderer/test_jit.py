@@ -234,3 +234,23 @@ def test_a_kernel_numba_cannot_cache_gets_numbas_warning_not_a_crash():
         warnings.simplefilter("always")
         assert kernel() >= 1
     assert any("Cannot cache" in str(w.message) for w in caught)
+
+
+def test_a_kernel_compiled_without_refcounts_counts_no_references():
+    """``njit(refcounts=False)``: the compiled code calls no ``NRT_incref``/``NRT_decref``, where
+    the same function with them does; the lighting kernel, called once per span, is built so."""
+    import numpy as np
+
+    from renderer.reflection.vtk_spans import vtk_light_kernel
+
+    def total(a, b):
+        view = a[1:]
+        return view.sum() + b[0]
+
+    counted, uncounted = jit.njit(total), jit.njit(total, refcounts=False)
+    args = (np.arange(5.0), np.ones(2))
+    assert counted(*args) == uncounted(*args) == 11.0
+    assert "NRT_incref" in counted.inspect_llvm(counted.signatures[0])
+    assert "NRT_incref" not in uncounted.inspect_llvm(uncounted.signatures[0])
+    assert "NRT_decref" not in uncounted.inspect_llvm(uncounted.signatures[0])
+    assert vtk_light_kernel.targetoptions.get("_nrt") is False
