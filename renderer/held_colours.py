@@ -22,8 +22,9 @@ import numpy as np
 
 from renderer.float32_math import unorm8
 from renderer.jit import njit, prange
+from renderer.lit_colours import face_colour
 from renderer.raster import EMPTY
-from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL
+from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, any_flat
 from renderer.reflection.registry import light_points, span_normal_only, spans_normal_only, store_span
 from renderer.spans import F0, face_toward_viewer
 from renderer.workspace import empty
@@ -85,9 +86,8 @@ def face_colours(o, frags, geo, lit, out):
     for k in range(frags.clip_source.shape[0]):
         s = frags.clip_source[k]
         if geo.tri_object[s] == o:
-            out[k, 0] = unorm8(lit.face[s, 0] + lit.face[s, 3])
-            out[k, 1] = unorm8(lit.face[s, 1] + lit.face[s, 4])
-            out[k, 2] = unorm8(lit.face[s, 2] + lit.face[s, 5])
+            r, g, b = face_colour(lit, s)
+            out[k, 0], out[k, 1], out[k, 2] = unorm8(r), unorm8(g), unorm8(b)
 
 
 def held_colour_table(frags, geo, materials, lights, lit, ws=None) -> np.ndarray:
@@ -96,7 +96,7 @@ def held_colour_table(frags, geo, materials, lights, lit, ws=None) -> np.ndarray
     workspace ``ws``."""
     count = len(frags.clip_source)
     out = np.zeros((count, 3), np.uint8)
-    if any(path in (PIXEL_FACE_NORMAL, FACE_COLOUR) for path in materials.shading_path):
+    if any_flat(materials):
         held_colours(frags, geo, materials, lights, lit, empty(ws, "held.points", (6, max(count, 1)), np.float32),
                      empty(ws, "held.colour", (3, max(count, 1)), np.float32),
                      empty(ws, "held.stored", (max(count, 1), 3), np.uint8), out)

@@ -21,6 +21,12 @@ from renderer.reflection.registry import reflect
 from renderer.workspace import empty
 
 
+@njit(cache=True, inline="always")
+def face_colour(lit, s):
+    """Source triangle ``s``'s flat colour (FACE_COLOUR): primary + secondary RGB of ``lit.face``."""
+    return lit.face[s, 0] + lit.face[s, 3], lit.face[s, 1] + lit.face[s, 4], lit.face[s, 2] + lit.face[s, 5]
+
+
 class LitColours(NamedTuple):
     """vertex (N, 6) per vertex and face (T, 6) per triangle: primary RGB, then secondary RGB.
     Only the rows of objects on the matching path are written; the others are undefined."""

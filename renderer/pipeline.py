@@ -29,7 +29,7 @@ from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
 from renderer.raster import BATCH, IndexedTriangles, frame_depth_and_coverage, rasterize_visibility, weight_planes
-from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL
+from renderer.reflection.materials import any_flat
 from renderer.reflection.registry import material_table
 from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
 from renderer.texture_sampling import texture_table
@@ -186,7 +186,7 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
     workspace ``ws`` the tables live in it (a 327,680-triangle sphere's are 28 MB, faulted
     in page by page when allocated afresh each frame). ``with_face_normals`` False leaves
     ``face_normals`` undefined, for a frame no object of which reads them
-    (:func:`needs_face_normals`)."""
+    (:func:`renderer.reflection.materials.any_flat`)."""
     objects = scene.objects
     n_points = [obj.mesh.n_points for obj in objects]
     n_triangles = [obj.mesh.n_triangles for obj in objects]
@@ -219,12 +219,6 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
         face_normals(verts_view, triangles, normals_face)
     return SceneGeometry(verts_view, verts_clip, normals, triangles, tri_object, vert_object, tcoords, normals_face,
                          bool(scene.camera.parallel))
-
-
-def needs_face_normals(materials) -> bool:
-    """Whether some object's shading path reads its triangles' plane normals: flat shading,
-    lit per pixel (``PIXEL_FACE_NORMAL``) or per triangle (``FACE_COLOUR``)."""
-    return bool(np.isin(materials.shading_path, (PIXEL_FACE_NORMAL, FACE_COLOUR)).any())
 
 
 def copied(geo: SceneGeometry) -> SceneGeometry:
@@ -310,7 +304,7 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     v2c = view_to_clip(cam, width / height, near_far)
     ws = thread_workspace()
     materials = material_table(scene)
-    geo = transform_scene(scene, w2v, v2c, ws, with_face_normals=keep_stages or needs_face_normals(materials))
+    geo = transform_scene(scene, w2v, v2c, ws, with_face_normals=keep_stages or any_flat(materials))
 
     lean = options.lean
     clipped = clip_and_map(geo, width, height, ws, trivial=lean)

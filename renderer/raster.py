@@ -138,15 +138,31 @@ def depth_plane(t, i0, i1, i2, out):
 
 
 @njit(cache=True, inline="always")
-def triangle_plane(window, i0, i1, i2, plane):
-    """The float part of a triangle's set-up into ``plane`` (11,) (see :class:`TriangleSetup`):
-    corner 0 and the edges to corners 1 and 2, in the triangle's own corner order, then its
-    depth plane; the corners are rows ``i0, i1, i2`` of the window table (M, 3). Returns
-    twice its signed area in float (0.0: no weights can be worked out)."""
+def signed_area_corners(fixed, i0, i1, i2):
+    """:func:`signed_area_fixed` of the triangle whose corners are rows ``i0, i1, i2`` of a
+    fixed-point vertex table (M, 2)."""
+    return ((fixed[i1, 0] - fixed[i0, 0]) * (fixed[i2, 1] - fixed[i0, 1])
+            - (fixed[i2, 0] - fixed[i0, 0]) * (fixed[i1, 1] - fixed[i0, 1]))
+
+
+@njit(cache=True, inline="always")
+def weights_plane(window, i0, i1, i2, plane):
+    """The plane of a triangle's screen-space weights into ``plane`` (≥ 6,): corner 0 (x0,
+    y0) and the edges to corners 1 and 2, in the triangle's own corner order; the corners
+    are rows ``i0, i1, i2`` of the window table (M, 3)."""
     x0, y0 = window[i0, 0], window[i0, 1]
     plane[0], plane[1] = x0, y0
     plane[2], plane[3] = window[i1, 0] - x0, window[i1, 1] - y0
     plane[4], plane[5] = window[i2, 0] - x0, window[i2, 1] - y0
+
+
+@njit(cache=True, inline="always")
+def triangle_plane(window, i0, i1, i2, plane):
+    """The float part of a triangle's set-up into ``plane`` (11,) (see :class:`TriangleSetup`):
+    the weights' plane (:func:`weights_plane`), then the depth plane; the corners are rows
+    ``i0, i1, i2`` of the window table (M, 3). Returns
+    twice its signed area in float (0.0: no weights can be worked out)."""
+    weights_plane(window, i0, i1, i2, plane)
     depth_plane(window, i0, i1, i2, plane[6:])
     return plane[2] * plane[5] - plane[4] * plane[3]
 
@@ -160,8 +176,7 @@ def setup_triangles(corners, fixed, window, height, cull_back, front, ccw, rows,
     back-face culling."""
     for k in prange(corners.shape[0]):
         i0, i1, i2 = corners[k, 0], corners[k, 1], corners[k, 2]
-        area = ((fixed[i1, 0] - fixed[i0, 0]) * (fixed[i2, 1] - fixed[i0, 1])
-                - (fixed[i2, 0] - fixed[i0, 0]) * (fixed[i1, 1] - fixed[i0, 1]))  # signed_area_fixed
+        area = signed_area_corners(fixed, i0, i1, i2)
         front[k] = area > 0
         if area < 0:  # orient counter-clockwise for the span test; weights keep source order
             i1, i2 = i2, i1
@@ -184,12 +199,8 @@ def weight_planes(corners, fixed, window, front, plane):
     ``plane`` (K, ≥ 6), the same bits (no depth plane, spans or rows: the raster is done)."""
     for k in prange(corners.shape[0]):
         i0, i1, i2 = corners[k, 0], corners[k, 1], corners[k, 2]
-        front[k] = ((fixed[i1, 0] - fixed[i0, 0]) * (fixed[i2, 1] - fixed[i0, 1])
-                    - (fixed[i2, 0] - fixed[i0, 0]) * (fixed[i1, 1] - fixed[i0, 1])) > 0  # signed_area_fixed
-        x0, y0 = window[i0, 0], window[i0, 1]
-        plane[k, 0], plane[k, 1] = x0, y0
-        plane[k, 2], plane[k, 3] = window[i1, 0] - x0, window[i1, 1] - y0
-        plane[k, 4], plane[k, 5] = window[i2, 0] - x0, window[i2, 1] - y0
+        front[k] = signed_area_corners(fixed, i0, i1, i2) > 0
+        weights_plane(window, i0, i1, i2, plane[k])
 
 
 @njit(cache=True, inline="always")

@@ -33,6 +33,7 @@ from renderer.jit import njit, prange
 from renderer.bands import shading_bands
 from renderer.float32_math import unorm8
 from renderer.held_colours import all_held, held_colour_table, paint_rows
+from renderer.lit_colours import face_colour
 from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
@@ -278,7 +279,7 @@ def modulate_span(k, row, c0, count, frags, geo, textures, o, colour, st):
 def hold_face_colour(s, row, c0, c1, lit, rgb):
     """Source triangle ``s``'s lit colour (primary + secondary, :mod:`renderer.lit_colours`)
     stored along the pixels c0 … c1 − 1 of ``row``."""
-    r, g, b = lit.face[s, 0] + lit.face[s, 3], lit.face[s, 1] + lit.face[s, 4], lit.face[s, 2] + lit.face[s, 5]
+    r, g, b = face_colour(lit, s)
     store(rgb, row, c0, r, g, b)
     copy_along(rgb, row, c0, c1)
 

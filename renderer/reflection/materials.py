@@ -28,6 +28,12 @@ import numpy as np
 PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, FACE_COLOUR, VERTEX_COLOUR, PIXEL_AS_GIVEN = 0, 1, 2, 3, 4
 
 
+def any_flat(materials) -> bool:
+    """True when some object is shaded flat (:data:`PIXEL_FACE_NORMAL` or :data:`FACE_COLOUR`):
+    only such a frame reads its triangles' plane normals and holds colours per triangle."""
+    return bool(np.isin(materials.shading_path, (PIXEL_FACE_NORMAL, FACE_COLOUR)).any())
+
+
 def smooth(obj) -> bool:
     """True when ``obj`` is shaded with its vertex normals: a gouraud or phong object that has
     them (without point normals every shading falls back to flat)."""

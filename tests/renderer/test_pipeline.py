@@ -413,7 +413,7 @@ def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, 
 
     scene = load_scene("textbook-sphere").with_overrides(shading=shading, model=model)
     triangles = sum(o.mesh.n_triangles for o in scene.objects)
-    monkeypatch.setattr(pipeline, "needs_face_normals", lambda materials: True)
+    monkeypatch.setattr(pipeline, "any_flat", lambda materials: True)
     expected = render(scene).rgb
     monkeypatch.undo()
     calls = []

@@ -5,7 +5,8 @@ import pytest
 from lab.mesh import Mesh
 from lab.scene import SceneObject
 from lab.shapes import quad
-from renderer.reflection.materials import FACE_COLOUR, PIXEL_AS_GIVEN, VERTEX_COLOUR, smooth, textbook_path
+from renderer.reflection.materials import (FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR,
+                                          any_flat, smooth, textbook_path)
 
 FLAT = quad(1.0)
 WITH_NORMALS = Mesh(FLAT.points, FLAT.triangles, point_normals=np.tile([0.0, 0.0, 1.0], (len(FLAT.points), 1)))
@@ -24,3 +25,11 @@ def test_smooth_needs_vertex_normals_and_a_smooth_shading(mesh, shading, expecte
 def test_the_textbook_lights_faces_vertices_or_pixels(mesh, shading, expected):
     """flat → once per triangle; gouraud → per vertex; phong → per pixel; without normals, flat."""
     assert textbook_path(SceneObject(mesh=mesh, shading=shading)) == expected
+
+
+@pytest.mark.parametrize("paths, flat", [((PIXEL_FACE_NORMAL,), True), ((VERTEX_COLOUR, FACE_COLOUR), True),
+                                         ((PIXEL_TWO_SIDED, VERTEX_COLOUR, PIXEL_AS_GIVEN), False), ((), False)])
+def test_a_frame_is_flat_when_some_object_is_lit_with_its_plane_normal_or_holds_a_colour_per_triangle(paths, flat):
+    from types import SimpleNamespace
+
+    assert any_flat(SimpleNamespace(shading_path=np.array(paths, np.int64))) is flat
