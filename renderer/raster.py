@@ -34,7 +34,7 @@ from typing import Callable, NamedTuple
 import numpy as np
 from renderer.jit import njit, prange
 
-from renderer.bands import BLOCK_ROWS, first_block_of_band, raster_bands
+from renderer.bands import BLOCK_ROWS, first_block_of_band, one_band_at_a_time, raster_bands
 from renderer.window import SUBPIXEL
 from renderer.workspace import empty
 
@@ -424,7 +424,8 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     for a in range(0, max(count, 1), step):
         rows = np.ascontiguousarray(triangles.corners(a, min(a + step, count)), dtype=np.int64)
         setup = set_up_corners(rows, triangles.fixed, triangles.window, height, cull_back, ws, "raster")
-        rasterize(setup, bands, rule, bool(depth_test), a, a == 0, depth, tri_index)
+        with one_band_at_a_time():
+            rasterize(setup, bands, rule, bool(depth_test), a, a == 0, depth, tri_index)
     return Visibility(depth, tri_index)
 
 

@@ -30,7 +30,7 @@ from typing import NamedTuple
 import numpy as np
 from renderer.jit import njit, prange
 
-from renderer.bands import shading_bands
+from renderer.bands import one_band_at_a_time, shading_bands
 from renderer.float32_math import unorm8
 from renderer.held_colours import all_held, held_colour_table, paint_rows
 from renderer.lit_colours import face_colour
@@ -494,10 +494,12 @@ def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, 
     n_bands = shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height))
     if spans and spans_cover_all(inputs.materials, inputs.textures, inputs.lights):
         held = held_colour_table(frags, geo, inputs.materials, inputs.lights, inputs.lit, thread_workspace())
-        if all_held(inputs.materials, inputs.lights):
-            paint_rows(frags.tri_index, held, background, n_bands, rgb)
-        else:
-            shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, held, background, n_bands, rgb)
+        with one_band_at_a_time():
+            if all_held(inputs.materials, inputs.lights):
+                paint_rows(frags.tri_index, held, background, n_bands, rgb)
+            else:
+                shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, held, background, n_bands, rgb)
     else:
-        shade_rows(frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, background, n_bands,
-                   bool(spans), rgb)
+        with one_band_at_a_time():
+            shade_rows(frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, background, n_bands,
+                       bool(spans), rgb)

@@ -41,7 +41,7 @@ from typing import NamedTuple
 import numpy as np
 from renderer.jit import njit, prange
 
-from renderer.bands import first_row_of_band, raster_bands, shading_bands
+from renderer.bands import first_row_of_band, one_band_at_a_time, raster_bands, shading_bands
 from renderer.fragment_spans import span_linear_colours
 from renderer.raster import DEPTH_CLEAR, FILL_RULES, pixel_depth, row_depth, row_span, set_up
 from renderer.shading import Fragments, ShadingInputs, span_scratch, unorm8
@@ -449,8 +449,9 @@ def collect_lists(setup, opaque_depth, rule, depth_test, n_bands, ws=None) -> Fr
     height, width = opaque_depth.shape
     count = empty(ws, "translucency.count", (height, width), np.int32)
     start = empty(ws, "translucency.start", (height, width), np.int64)
-    collect_fragments(setup, n_bands, rule, bool(depth_test), opaque_depth, count, start, np.empty(0, np.int32),
-                      np.empty(0, np.int32))
+    with one_band_at_a_time():
+        collect_fragments(setup, n_bands, rule, bool(depth_test), opaque_depth, count, start, np.empty(0, np.int32),
+                          np.empty(0, np.int32))
     flat = start.reshape(-1)
     flat[0] = 0
     np.cumsum(count.reshape(-1)[:-1], out=flat[1:])
@@ -458,7 +459,8 @@ def collect_lists(setup, opaque_depth, rule, depth_test, n_bands, ws=None) -> Fr
     lists = FragmentLists(count, start, empty(ws, "translucency.frag_tri", total, np.int32),
                           empty(ws, "translucency.frag_z", total, np.int32), max(int(count.max()), 1), opaque_depth)
     if total:
-        collect_fragments(setup, n_bands, rule, bool(depth_test), opaque_depth, count, start, lists.tri, lists.z)
+        with one_band_at_a_time():
+            collect_fragments(setup, n_bands, rule, bool(depth_test), opaque_depth, count, start, lists.tri, lists.z)
     return lists
 
 
@@ -505,14 +507,17 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
     shading = (setup, frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit,
                RunRules(strip_bands, rule, bool(depth_test), bool(spans)))
     if MODES[mode] == OIT and spans:
-        shade_fragments(*shading, RunTargets(opaque_depth, seen, np.empty((1, 1), np.int64), np.empty((0, 3), np.float32),
-                                             empty(ws, "translucency.sums", (5, height, width), np.float32), rgb))
+        with one_band_at_a_time():
+            shade_fragments(*shading, RunTargets(opaque_depth, seen, np.empty((1, 1), np.int64),
+                                                 np.empty((0, 3), np.float32),
+                                                 empty(ws, "translucency.sums", (5, height, width), np.float32), rgb))
         return seen > 0
     lists = collect_lists(setup, opaque_depth, rule, depth_test, n_bands, ws)
     colours = empty(ws, "translucency.colours", (len(lists.tri), 3), np.float32)
-    if len(colours):
-        shade_fragments(*shading, RunTargets(opaque_depth, seen, lists.start, colours,
-                                             np.empty((0, 0, 5), np.float32), rgb))
-    alphas = inputs.materials.opacity[geo.tri_object[frags.clip_source]]
-    composite_lists(lists, colours, alphas, MODES[mode], shading_bands(height), rgb)
+    with one_band_at_a_time():
+        if len(colours):
+            shade_fragments(*shading, RunTargets(opaque_depth, seen, lists.start, colours,
+                                                 np.empty((0, 0, 5), np.float32), rgb))
+        alphas = inputs.materials.opacity[geo.tri_object[frags.clip_source]]
+        composite_lists(lists, colours, alphas, MODES[mode], shading_bands(height), rgb)
     return lists.count > 0

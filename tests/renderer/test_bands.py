@@ -45,3 +45,13 @@ def test_blocks_give_every_row_to_exactly_one_band_and_a_small_triangle_to_one(l
             block += n_bands
     assert sorted(owner) == list(range(lo, hi + 1))
     assert all(owner[r] == (r // BLOCK_ROWS) % n_bands for r in owner)
+
+
+def test_loops_over_bands_hand_them_out_one_at_a_time_and_leave_numba_as_it_was():
+    """Inside one_band_at_a_time numba's parallel loops take BAND_CHUNK iterations at a time
+    (threads take the next band as they come free); after it, numba's setting is back."""
+    from renderer.bands import BAND_CHUNK, one_band_at_a_time
+    before = numba.get_parallel_chunksize()
+    with one_band_at_a_time():
+        assert numba.get_parallel_chunksize() == BAND_CHUNK == 1
+    assert numba.get_parallel_chunksize() == before
