@@ -18,7 +18,8 @@ vectors in view space. By path:
 Rows are shaded in **spans**, runs of pixels showing one triangle (:func:`shade_span`): a
 colour that cannot change along the span is worked out once; a model with a span kernel
 (the vtk model, :mod:`renderer.reflection.vtk_spans`) lights the whole span in float32,
-vectorised (:mod:`renderer.spans`); anything else is lit pixel by pixel through
+vectorised (:mod:`renderer.spans`), and a row's run of one such object is lit in one loop
+across its triangles (:func:`shade_lit_run`, :func:`shade_textured_run`); anything else is lit pixel by pixel through
 :func:`renderer.reflection.registry.reflect`, which picks the object's reflection model. A texture multiplies the lit colour (VTK, GL_MODULATE); the
 secondary colour (separate specular, zero unless asked for) is added after it.
 """
@@ -229,7 +230,8 @@ def store(rgb, row, col, r, g, b):
 @njit(cache=True, inline="always")
 def span_tcoords(k, row, c0, count, frags, geo, st):
     """Texture coordinates (s, t) of the pixels c0 … c0 + count − 1 of ``row`` (all showing
-    clipped triangle ``k``) into ``st`` (2, ≥ count) float64: for each pixel the bits
+    clipped triangle ``k``) into ``st`` (2, W) float64 at the pixels' own columns (as
+    :func:`renderer.spans.span_points` writes points): for each pixel the bits
     :func:`fragment_colour` gets. What is constant along the span is read here, once, and
     handed to :func:`tcoords_along` as numbers."""
     s = frags.clip_source[k]
@@ -258,8 +260,9 @@ def tcoords_along(edges, w, cb, tcoords, perspective, c0, count, st):
     for i in range(count):
         px = (c0 + i) + 0.5 - x0
         w0, w1, w2 = source_weights((px * e2y - e2x * py) / a2, (e1x * py - px * e1y) / a2, w, cb, perspective)
-        st[0, i] = w0 * s0 + w1 * s1 + w2 * s2
-        st[1, i] = w0 * t0 + w1 * t1 + w2 * t2
+        at = np.uint64(c0 + i)  # unsigned: no wrap-around, the loop vectorises
+        st[0, at] = w0 * s0 + w1 * s1 + w2 * s2
+        st[1, at] = w0 * t0 + w1 * t1 + w2 * t2
 
 
 @njit(cache=True, inline="always")
@@ -267,12 +270,12 @@ def modulate_span(k, row, c0, count, frags, geo, textures, o, colour, st):
     """The span's linear colours (``colour`` (3, ≥ count) float32) multiplied by object
     ``o``'s texture (VTK, GL_MODULATE). The pixels' texture coordinates are interpolated as
     :func:`fragment_colour` interpolates them (float64, the same bits, :func:`span_tcoords`,
-    into the scratch ``st`` (2, ≥ count) float64), so a texel is chosen as on the
+    into the row scratch ``st`` (2, W) float64, at their columns), so a texel is chosen as on the
     pixel-by-pixel path; then the whole span is filtered in one loop
     (:func:`renderer.texture_sampling.modulate_texels`); only the product is float32, as in
     VTK's shader."""
     span_tcoords(k, row, c0, count, frags, geo, st)
-    modulate_texels(textures, o, st, count, colour)
+    modulate_texels(textures, o, st, c0, count, colour)
 
 
 @njit(cache=True, inline="always")
@@ -339,17 +342,59 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     points, colour, _ = scratch
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
-    start, width = col, frags.tri_index.shape[1]
-    while True:
+    start = col
+    while k != EMPTY:
         span_points(span_setup(k, row, col, frags, geo, face), face, end - col, points, col)
         col = end
-        if col == width:
-            break
-        k = frags.tri_index[row, col]
-        if k == EMPTY or object_of(k, frags, geo) != o:
-            break
-        end = span_end(frags.tri_index, row, col, True)
+        k, end = next_span_of(o, row, col, frags, geo)
     light_points(o, materials, lights, points, start, col - start, colour)
+    store_span(colour, col - start, rgb[row, start:col])
+    return col
+
+
+@njit(cache=True, inline="always")
+def next_span_of(o, row, col, frags, geo):
+    """The span that starts at ``col`` on ``row`` (its triangle and end, :func:`span_end`) if
+    it shows object ``o``; else (EMPTY, col): a run of one object ends there."""
+    if col == frags.tri_index.shape[1]:
+        return EMPTY, col
+    k = frags.tri_index[row, col]
+    if k == EMPTY or object_of(k, frags, geo) != o:
+        return EMPTY, col
+    return k, span_end(frags.tri_index, row, col, True)
+
+
+@njit(cache=True, inline="always")
+def textured_run(o, materials, textures, lights):
+    """True when object ``o`` is textured and lit per pixel by its model's span kernel: then
+    :func:`shade_textured_run` colours whole runs of it (else :func:`shade_span`)."""
+    path = materials.shading_path[o]
+    return textures.textured[o] and (path == PIXEL_FACE_NORMAL or path == PIXEL_TWO_SIDED) and span_applies(
+        o, materials, lights)
+
+
+@njit(cache=True, inline="always")
+def shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
+    """:func:`shade_lit_run` for a :func:`textured_run` object: each span of the run gives its
+    points and its texture coordinates (:func:`span_tcoords`) at their columns, then the
+    whole run is lit in one loop, multiplied by its texels in one loop
+    (:func:`renderer.texture_sampling.modulate_texels`) and stored. The same bytes as
+    :func:`shade_span` span by span (each pixel's point, coordinates and texel are its own
+    triangle's), with the lighting and the texture filter run over a whole row of the
+    object instead of spans a few pixels long. Returns the run's end. ``inputs``:
+    ``(materials, textures, lights, lit)``."""
+    materials, textures, lights, _ = inputs
+    points, colour, st = scratch
+    o = object_of(k, frags, geo)
+    face = materials.shading_path[o] == PIXEL_FACE_NORMAL
+    start = col
+    while k != EMPTY:
+        span_points(span_setup(k, row, col, frags, geo, face), face, end - col, points, col)
+        span_tcoords(k, row, col, end - col, frags, geo, st)
+        col = end
+        k, end = next_span_of(o, row, col, frags, geo)
+    light_points(o, materials, lights, points, start, col - start, colour)
+    modulate_texels(textures, o, st, start, col - start, colour)
     store_span(colour, col - start, rgb[row, start:col])
     return col
 
@@ -434,7 +479,8 @@ def fill_colour(rgb, row, c0, c1, colour):
 def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands, spans, rgb):
     """Colour every covered pixel and store 8-bit RGB (the loop kernel), every shading path.
 
-    Each row is walked in spans of pixels that show the same triangle (:func:`shade_span`);
+    Each row is walked in spans of pixels that show the same triangle (:func:`shade_span`),
+    a textured object lit per pixel in runs of its spans (:func:`shade_textured_run`);
     an empty pixel gets the 8-bit ``background``. ``spans`` False cuts every span to one
     pixel (the plain path the tests compare the spans with: the same bytes). Rows are
     independent and each pixel is written once, so a parallel loop gives the same bytes as
@@ -453,6 +499,8 @@ def shade_rows(frags, geo, materials, textures, lights, lit, background, n_bands
                 k, end = frags.tri_index[row, col], span_end(frags.tri_index, row, col, spans)
                 if k == EMPTY:
                     fill_colour(rgb, row, col, end, background)
+                elif spans and textured_run(object_of(k, frags, geo), materials, textures, lights):
+                    end = shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb)
                 else:
                     shade_span(k, row, col, end, frags, geo, inputs, scratch, rgb)
                 col = end

@@ -211,15 +211,16 @@ def sample_texture(textures, o, s, t):
 
 
 @njit(cache=True, inline="always")
-def modulate_texels(textures, o, st, count, colour):
+def modulate_texels(textures, o, st, first, count, colour):
     """``colour`` (3, ≥ count) float32, a span's linear colours, multiplied by object ``o``'s
-    texture at the span's texture coordinates ``st`` (2, ≥ count) float64 (:func:`filter_span`)."""
+    texture at the span's texture coordinates, columns ``first`` … ``first + count − 1`` of
+    ``st`` (2, W) float64 (:func:`filter_span`)."""
     filter_span(textures.texels, textures.offset[o], textures.width[o], textures.height[o], textures.filter[o],
-                textures.wrap[o], st, count, colour)
+                textures.wrap[o], st, first, count, colour)
 
 
 @njit(cache=True)
-def filter_span(texels, offset, width, height, filter_mode, wrap, st, count, colour):
+def filter_span(texels, offset, width, height, filter_mode, wrap, st, first, count, colour):
     """The values :func:`sample` gives at ``st``, as float32, multiplied into ``colour``. Filter
     and wrap are the object's, chosen once for the whole span: one straight loop per filter,
     the filter inlined. Compiled on its own, called once per span: inlined into the general
@@ -227,10 +228,12 @@ def filter_span(texels, offset, width, height, filter_mode, wrap, st, count, col
     measurable gain."""
     if filter_mode == NEAREST:
         for i in range(count):
-            modulate(colour, i, nearest_texel(texels, offset, width, height, wrap, st[0, i], st[1, i]))
+            j = np.uint64(first + i)
+            modulate(colour, i, nearest_texel(texels, offset, width, height, wrap, st[0, j], st[1, j]))
     else:
         for i in range(count):
-            modulate(colour, i, linear_texel(texels, offset, width, height, wrap, st[0, i], st[1, i]))
+            j = np.uint64(first + i)
+            modulate(colour, i, linear_texel(texels, offset, width, height, wrap, st[0, j], st[1, j]))
 
 
 @njit(cache=True, inline="always")

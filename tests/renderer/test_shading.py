@@ -117,7 +117,7 @@ def test_a_spans_texture_coordinates_are_the_bits_of_its_pixels_one_at_a_time(pe
             c0, count = int(rng.integers(0, 40)), int(rng.integers(1, 25))
             span_tcoords(k, row, c0, count, frags, geo, st)
             expected = [pixel_tcoords(k, row, c0 + i, frags, geo) for i in range(count)]
-            assert st[:, :count].T.tolist() == [list(e) for e in expected], (k, row, c0)
+            assert st[:, c0:c0 + count].T.tolist() == [list(e) for e in expected], (k, row, c0)
 
 
 def test_plane_normal_is_the_unit_cross_product_and_zero_when_degenerate():

@@ -182,13 +182,43 @@ def test_textured_spans_on_texel_edges_show_the_filter_as_defined(filter_mode, w
                         shade(frags, geo, *a, **k))
     fast = render(s)
     frags, geo = seen[0]
-    st = np.empty((2, 1))
+    st = np.empty((2, 64))
     for row, col in np.ndindex(64, 64):  # window rows, y up
         span_tcoords(frags.tri_index[row, col], row, col, 1, frags, geo, st)
-        assert st[:, 0].tolist() == [(col + 0.5) / 16 - 1, (row + 0.5) / 16 - 1]
+        assert st[:, col].tolist() == [(col + 0.5) / 16 - 1, (row + 0.5) / 16 - 1]
     codes = (LINEAR if filter_mode == "linear" else NEAREST, CLAMP if wrap == "clamp" else REPEAT)
     texels = tex.texels_8bit.reshape(-1, 3)
     expected = [[by_definition(texels, 32, 16, *codes, (col + 0.5) / 16 - 1, (63 - r + 0.5) / 16 - 1)
                  for col in range(64)] for r in range(64)]  # image rows, top first
     np.testing.assert_array_equal(fast.rgb, expected)
     np.testing.assert_array_equal(render(s, RenderOptions(spans=False)).rgb, expected)
+
+
+@pytest.mark.parametrize("shading", ["flat", "phong"])
+def test_textured_runs_across_triangles_and_objects_keep_the_bytes(shading):
+    """A row's run of one textured object is lit, filtered and stored in one go
+    (``shade_textured_run``) across its triangles; it ends where another object, an
+    untextured one or one with another texture and filter, or the image's edge begins: the
+    same bytes as pixel by pixel, with one thread and with two."""
+    from lab.texture import Texture
+
+    fine = icosphere(level=4, uv=1)
+    fine = replace(fine, point_normals=radial_normals(fine.points))
+    material = Material(color=(1.0, 1.0, 1.0), specular=0.4, specular_power=30.0)
+    objects = (
+        SceneObject(mesh=fine, material=material, shading=shading,
+                    texture=Texture(checker(16, seed=5), filter="nearest", wrap="repeat"),
+                    model_to_world=model_matrix(translate=(-0.7, 0.0, 0.0))),
+        SceneObject(mesh=fine, material=material, shading=shading,
+                    texture=Texture(checker(8, seed=6), filter="linear", wrap="clamp"),
+                    model_to_world=model_matrix(rotate=(0.0, 90.0, 0.0), translate=(0.9, 0.1, -0.2))),
+        SceneObject(mesh=ball(3), material=Material(color=(0.3, 0.8, 0.5), specular=0.3), shading=shading,
+                    model_to_world=model_matrix(scale=(0.4, 0.4, 0.4), translate=(0.1, -0.3, 0.9))),
+    )
+    s = scene(shading, LIGHTS["one-scene-light"], size=(120, 80), objects=objects,
+              camera=Camera(position=(0.3, 0.4, 3.0), view_angle=45.0, clipping_range=(0.5, 30.0)))
+    fast = render(s)
+    assert fast.coverage[:, -1].any()  # some runs end at the image's edge
+    np.testing.assert_array_equal(fast.rgb, render(s, RenderOptions(spans=False)).rgb)
+    with one_thread():
+        np.testing.assert_array_equal(render(s).rgb, fast.rgb)

@@ -100,7 +100,9 @@ def test_a_span_is_modulated_by_exactly_the_values_sample_gives(filt, wrap, size
     st = np.ascontiguousarray(np.stack([s, t]))
     start = rng.uniform(0.2, 1.5, (3, len(s))).astype(np.float32)
     colour = start.copy()
-    modulate_texels(textures, 1, st, len(s), colour)
+    at = 5  # the span's coordinates from column 5 of a row's scratch on
+    row_st = np.concatenate([np.full((2, at), np.nan), st], axis=1)
+    modulate_texels(textures, 1, row_st, at, len(s), colour)
     expected = start * np.array([sample(lanes, 7, width, height, filt, wrap, a, b) for a, b in zip(s, t)],
                                 np.float32).T
     np.testing.assert_array_equal(colour, expected)
