@@ -25,16 +25,17 @@ import numpy as np
 from renderer.jit import njit
 from renderer.raster import screen_weights
 from renderer.reflection.materials import PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED
-from renderer.reflection.registry import span_applies, span_colours, span_normal_only
+from renderer.reflection.registry import light_points, span_applies, span_colours, span_normal_only
 from renderer.shading import fragment_colour, modulate_span
-from renderer.spans import span_setup
+from renderer.spans import span_points, span_setup
 
 
 @njit(cache=True, inline="always")
 def span_linear_colours(k, row, c0, count, frags, geo, inputs, scratch):
     """The linear colours of clipped triangle ``k``'s pixels ``c0 … c0 + count − 1`` on
     ``row`` into the colour of ``scratch`` (points (6, ≥ count), colour (3, ≥ count)
-    float32, texture coordinates (2, ≥ count) float64: :func:`renderer.shading.span_scratch`;
+    float32, texture coordinates (2, W) float64 at the pixels' columns, W the row's
+    width: :func:`renderer.shading.span_scratch`;
     see the module docstring). ``frags``: a
     :class:`renderer.shading.Fragments` whose ``plane`` is the triangles' set-up (its
     ``tri_index`` is not read); ``inputs``: ``(materials, textures, lights, lit)``."""
@@ -56,6 +57,35 @@ def span_linear_colours(k, row, c0, count, frags, geo, inputs, scratch):
                 colour[0, i], colour[1, i], colour[2, i] = colour[0, 0], colour[1, 0], colour[2, 0]
         return
     pixel_by_pixel(k, row, c0, count, frags, geo, inputs, colour)
+
+
+@njit(cache=True, inline="always")
+def lit_in_batches(o, materials, textures, lights):
+    """True when object ``o``'s fragments can be lit many runs at a time
+    (:func:`batch_points`, then :func:`light_batch`): untextured and lit at every pixel by
+    its model's span kernel (not a colour held along a span). A triangle's runs on the rows
+    of a strip are then lit in one loop instead of one loop a run (a run is ten pixels or
+    so: too short for the loop's vector body)."""
+    path = materials.shading_path[o]
+    face = path == PIXEL_FACE_NORMAL
+    return (not textures.textured[o] and (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights)
+            and not (face and span_normal_only(o, materials, lights)))
+
+
+@njit(cache=True, inline="always")
+def batch_points(k, row, c0, count, frags, geo, face, points, at):
+    """The interpolated points of a run (clipped triangle ``k``'s pixels ``c0 … c0 + count −
+    1`` on ``row``) into columns ``at`` … of a batch's ``points`` (6, N) float32
+    (:func:`renderer.spans.span_points`): the points :func:`span_linear_colours` lights."""
+    span_points(span_setup(k, row, c0, frags, geo, face), face, count, points, at)
+
+
+@njit(cache=True, inline="always")
+def light_batch(o, materials, lights, points, count, colour):
+    """The linear colours of a batch's first ``count`` points (:func:`batch_points`) of object
+    ``o`` into ``colour`` (3, ≥ count) float32, in one loop: each the colour
+    :func:`span_linear_colours` gives its pixel."""
+    light_points(o, materials, lights, points, 0, count, colour)
 
 
 @njit(cache=True)

@@ -42,8 +42,9 @@ import numpy as np
 from renderer.jit import njit, prange
 
 from renderer.bands import first_row_of_band, one_band_at_a_time, raster_bands, shading_bands
-from renderer.fragment_spans import span_linear_colours
+from renderer.fragment_spans import batch_points, light_batch, lit_in_batches, span_linear_colours
 from renderer.raster import DEPTH_CLEAR, FILL_RULES, pixel_depth, row_depth, row_span, set_up
+from renderer.reflection.materials import PIXEL_FACE_NORMAL
 from renderer.shading import Fragments, ShadingInputs, span_scratch, unorm8
 from renderer.workspace import empty
 
@@ -290,20 +291,49 @@ arrive (measured: dealing single rows, each pixel's buffers came back from memor
 each of its layers)."""
 
 
+@njit(cache=True, inline="always")
+def batch_scratch(width):
+    """Scratch for a triangle's runs on one strip of an image ``width`` pixels wide (at most one
+    fragment a pixel): their points (6, N) and linear colours (3, N) float32
+    (:func:`renderer.fragment_spans.batch_points`), and each run's (row, first column,
+    pixels) (N, 3) int64, N = :data:`STRIP_ROWS` · width."""
+    n = STRIP_ROWS * max(width, 1)
+    return np.empty((6, n), np.float32), np.empty((3, n), np.float32), np.empty((n, 3), np.int64)
+
+
 @njit(cache=True)
-def add_run_to_oit(colour, a, count, seen, sum_r, sum_g, sum_b, weight, transmit):
-    """A run's ``count`` fragments (linear colours ``colour`` (3, ≥ count) float32, alpha
-    ``a``) added to the ``oit`` buffers of its pixels (:func:`oit_add`; empty buffers where
-    ``seen`` is still 0), and counted in ``seen``. ``seen`` and the five buffers are one
-    row's stretch of a plane, one value per pixel of the run: compiled on its own, with
-    plain 1-D arrays, this loop vectorises (measured: 1 ns a fragment instead of 6)."""
+def add_run_to_oit(colour, first, a, count, seen, sum_r, sum_g, sum_b, weight, transmit):
+    """A run's ``count`` fragments (linear colours: columns ``first`` … of ``colour`` (3, N)
+    float32, alpha ``a``) added to the ``oit`` buffers of its pixels (:func:`oit_add`; empty
+    buffers where ``seen`` is still 0), and counted in ``seen``. ``seen`` and the five
+    buffers are one row's stretch of a plane, one value per pixel of the run: compiled on
+    its own, with plain 1-D arrays, this loop vectorises (measured: 1 ns a fragment instead of 6)."""
     for i in range(count):
         fresh = seen[i] == 0
+        j = np.uint64(first + i)
         sum_r[i], sum_g[i], sum_b[i], weight[i], transmit[i] = oit_add(
             F32_ZERO if fresh else sum_r[i], F32_ZERO if fresh else sum_g[i], F32_ZERO if fresh else sum_b[i],
-            F32_ZERO if fresh else weight[i], F32_ONE if fresh else transmit[i], colour[0, i], colour[1, i],
-            colour[2, i], a)
+            F32_ZERO if fresh else weight[i], F32_ONE if fresh else transmit[i], colour[0, j], colour[1, j],
+            colour[2, j], a)
         seen[i] += 1
+
+
+@njit(cache=True, inline="always")
+def emit_run(colour, first, a, row, c0, count, seen, start, colours, sums):
+    """A lit run's fragments (pixels ``c0 … c0 + count − 1`` of ``row``, linear colours from
+    column ``first`` of ``colour`` (3, N) float32, alpha ``a``) to where
+    :func:`shade_fragments` sends them: with ``colours`` (F, 3) not empty, each pixel's next
+    place in its fragment list (``start``, ``seen``); else the ``oit`` buffers ``sums``
+    (:func:`add_run_to_oit`)."""
+    if colours.shape[0] > 0:
+        for i in range(count):
+            j = start[row, c0 + i] + seen[row, c0 + i]
+            colours[j, 0], colours[j, 1], colours[j, 2] = colour[0, first + i], colour[1, first + i], colour[2, first + i]
+            seen[row, c0 + i] += 1
+    else:
+        c1 = c0 + count
+        add_run_to_oit(colour, first, a, count, seen[row, c0:c1], sums[SUM_R, row, c0:c1], sums[SUM_G, row, c0:c1],
+                       sums[SUM_B, row, c0:c1], sums[WEIGHT, row, c0:c1], sums[TRANSMIT, row, c0:c1])
 
 
 @njit(cache=True, inline="always")
@@ -350,7 +380,9 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
     parallel, each drawing every triangle in order. Along a triangle's span on a row, each
     run of neighbouring fragments in front of the opaque surface is lit in one go
     (:func:`renderer.fragment_spans.span_linear_colours`; ``how`` a :class:`RunRules`;
-    ``into`` a :class:`RunTargets`). ``seen`` (H, W) counts each pixel's fragments so far. Then:
+    ``into`` a :class:`RunTargets`); for an object that
+    :func:`renderer.fragment_spans.lit_in_batches`, all the triangle's runs on the strip's
+    rows are interpolated first and lit in one loop, then sent on run by run (:func:`emit_run`). ``seen`` (H, W) counts each pixel's fragments so far. Then:
 
     - with ``colours`` (F, 3) float32 not empty: fragment ``j`` of pixel (row, col) gets
       its colour at ``start[row, col] + j`` (the lists of :func:`fragment_lists`);
@@ -369,6 +401,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
         inputs = (materials, textures, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
         scratch = span_scratch(width)  # a run's points, linear colours and texture coordinates
         colour = scratch[1]
+        batch = batch_scratch(width)  # a triangle's runs on a strip: points, colours, (row, c0, count)
         behind = np.empty(3, np.int64)
         out = np.empty(3, np.int64)
         for strip in range(b, n_strips, n_bands):
@@ -377,7 +410,11 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                 for col in range(width):
                     seen[row, col] = 0
             for k in range(setup.ccw.shape[0]):
-                a = np.float32(materials.opacity[geo.tri_object[frags.clip_source[k]]])
+                o = geo.tri_object[frags.clip_source[k]]
+                a = np.float32(materials.opacity[o])
+                batched = spans and lit_in_batches(o, materials, textures, lights)
+                face = materials.shading_path[o] == PIXEL_FACE_NORMAL
+                n_runs = n_points = 0
                 for row in range(max(setup.rows[k, 0], lo), min(setup.rows[k, 1], hi) + 1):
                     first, last = row_span(k, row, setup.ccw, width, rule)
                     z_row = row_depth(k, row, setup.plane)
@@ -392,17 +429,21 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                         if col == c0:  # behind the opaque surface
                             col += 1
                             continue
+                        if batched:  # lit with the triangle's other runs on this strip, below
+                            batch_points(k, row, c0, col - c0, frags, geo, face, batch[0], n_points)
+                            runs = batch[2]
+                            runs[n_runs, 0], runs[n_runs, 1], runs[n_runs, 2] = row, c0, col - c0
+                            n_runs, n_points = n_runs + 1, n_points + col - c0
+                            continue
                         span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, scratch)
-                        if fill:
-                            for i in range(col - c0):
-                                j = start[row, c0 + i] + seen[row, c0 + i]
-                                colours[j, 0], colours[j, 1], colours[j, 2] = colour[0, i], colour[1, i], colour[2, i]
-                                seen[row, c0 + i] += 1
-                        else:
-                            add_run_to_oit(colour, a, col - c0, seen[row, c0:col],
-                                           sums[SUM_R, row, c0:col], sums[SUM_G, row, c0:col],
-                                           sums[SUM_B, row, c0:col], sums[WEIGHT, row, c0:col],
-                                           sums[TRANSMIT, row, c0:col])
+                        emit_run(colour, 0, a, row, c0, col - c0, seen, start, colours, sums)
+                if n_runs:
+                    light_batch(o, materials, lights, batch[0], n_points, batch[1])
+                    first = 0
+                    for r in range(n_runs):
+                        row, c0, count = batch[2][r, 0], batch[2][r, 1], batch[2][r, 2]
+                        emit_run(batch[1], first, a, row, c0, count, seen, start, colours, sums)
+                        first += count
             if not fill:
                 for row in range(lo, hi + 1):
                     resolve_oit_row(sums, seen, row, rgb, behind, out)

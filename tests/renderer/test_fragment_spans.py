@@ -65,7 +65,8 @@ def colours_of_runs(path, lights, model="vtk", texture=(None, "repeat"), run=RUN
     inputs = (materials((0.1, 0.15, 0.2), (0.6, 0.5, 0.4), (0.5, 0.5, 0.5), 20.0, model=model, path=path),
               textures(*texture), lights, lit)
     out = np.empty((32, 3, 2 * RUN), np.float32)
-    points, colour, st = np.empty((6, RUN), np.float32), np.empty((3, RUN), np.float32), np.empty((2, RUN))
+    # texture coordinates go to their own columns of a row's scratch (as points do in the shading kernels)
+    points, colour, st = np.empty((6, RUN), np.float32), np.empty((3, RUN), np.float32), np.empty((2, 2 * RUN))
     for row in range(32):
         for c0 in range(0, 2 * RUN, run):
             span_linear_colours(0, row, c0, run, frags, geo, inputs, (points, colour, st))

@@ -251,8 +251,9 @@ FAST_CASES = [("oit", "zbuffer", False, "repeat"), ("oit", "zbuffer", False, "cl
 
 @pytest.mark.parametrize("mode, hidden, cull, wrap", FAST_CASES, ids=["-".join(map(str, c)) for c in FAST_CASES])
 def test_the_fast_path_gives_the_bytes_of_the_plain_path(mode, hidden, cull, wrap):
-    """Fragments lit in runs and, for ``oit``, summed as they are drawn (no lists): the same
-    bytes as lists lit one fragment at a time and composited pixel by pixel."""
+    """Fragments lit in runs (a triangle's runs on a strip of rows lit together, for the
+    untextured objects lit per pixel) and, for ``oit``, summed as they are drawn (no lists):
+    the same bytes as lists lit one fragment at a time and composited pixel by pixel."""
     s = layered_scene(mode, hidden, cull, wrap)
     fast = render(s)
     assert fast.coverage.mean() > 0.5
