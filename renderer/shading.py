@@ -382,7 +382,8 @@ def shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     :func:`shade_span` span by span (each pixel's point, coordinates and texel are its own
     triangle's), with the lighting and the texture filter run over a whole row of the
     object instead of spans a few pixels long. Returns the run's end. ``inputs``:
-    ``(materials, textures, lights, lit)``."""
+    ``(materials, textures, lights, lit)``. Kept apart from :func:`shade_lit_run`, whose
+    kernel (:func:`shade_rows_lit_spans`) then compiles no texture code."""
     materials, textures, lights, _ = inputs
     points, colour, st = scratch
     o = object_of(k, frags, geo)
