@@ -123,7 +123,7 @@ NO_STEP = 1 << 62
 never moves (:func:`edge_walk`)."""
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def edge_walk(f, e, row, stride, rule):
     """Edge ``e`` (corner e → e + 1) of a counter-clockwise fixed-point triangle ``f`` (3,
     2) set up to be walked from pixel row ``row`` up, ``stride`` rows a step: the scanline
@@ -132,12 +132,13 @@ def edge_walk(f, e, row, stride, rule):
     :func:`scanline_span` bounds a row's columns by one quotient per edge, ``num / den``
     with ``num`` linear in the row's height. Walking, the quotient is divided once here,
     as ``q·den + r`` (0 ≤ r < den), and then moved by a fixed step ``dq·den + dr`` per row
-    (:func:`edge_step`): the x of the edge advances by Δx/Δy a row as in the course's
+    (:func:`walk_span`): the x of the edge advances by Δx/Δy a row as in the course's
     algorithm, the fraction kept as a remainder, so every row gets the same column as
     :func:`scanline_span` (Bresenham's way: no division, no rounding error).
     Returns ``(kind, q, r, den, dq, dr)``: ``kind`` :data:`LEFT`, :data:`RIGHT` or
     :data:`HORIZONTAL` (then ``q, r`` are the edge's dx and its corner's y, for
-    :func:`walk_span`'s test, and the walk never moves)."""
+    :func:`walk_span`'s test, and the walk never moves). Called once an edge and stretch,
+    not inlined into the raster's kernel (less to compile, no slower)."""
     xa, ya = f[e, 0], f[e, 1]
     xb, yb = f[(e + 1) % 3, 0], f[(e + 1) % 3, 1]
     dx, dy = xb - xa, yb - ya
@@ -154,46 +155,42 @@ def edge_walk(f, e, row, stride, rule):
     return kind, q, num - q * den, den, dq, step - dq * den
 
 
-@njit(cache=True, inline="always")
-def edge_step(q, r, den, dq, dr):
-    """One step of an edge walk (:func:`edge_walk`): ``q·den + r`` plus ``dq·den + dr``, the
-    remainder carried into the quotient when it reaches ``den``."""
-    q, r = q + dq, r + dr
-    if r >= den:
-        q, r = q + 1, r - den
-    return q, r
-
-
-@njit(cache=True, inline="always")
-def edge_bound(kind, q, r, row, rule, first, last):
-    """The row's span ``[first, last]`` narrowed by one walked edge (:func:`edge_walk`), as
-    :func:`scanline_span` narrows it; a horizontal edge that keeps nothing empties it."""
-    if kind == LEFT:
-        return max(first, -q if rule == TOP_LEFT else q + 1), last
-    if kind == RIGHT:
-        return first, min(last, -q - 1 if rule == TOP_LEFT else q)
-    e_val = q * (row * SUBPIXEL - r)  # the horizontal edge's function: dx·(Y − ya)
-    owned = q > 0 if rule == TOP_LEFT else q < 0
-    if e_val < 0 or (e_val == 0 and not owned):
-        return 1, 0
-    return first, last
-
-
-@njit(cache=True, inline="always")
-def walk_on(w):
-    """An edge walk (:func:`edge_walk`) one step on."""
-    q, r = edge_step(w[1], w[2], w[3], w[4], w[5])
-    return w[0], q, r, w[3], w[4], w[5]
+@njit(cache=True)
+def start_walks(f, row, stride, rule, walks):
+    """The three edges of triangle ``f`` set up to be walked from ``row``, ``stride`` rows a
+    step (:func:`edge_walk`), into ``walks`` (3, 6) int64: one edge's ``(kind, q, r, den, dq,
+    dr)`` a row."""
+    for e in range(3):
+        walks[e, 0], walks[e, 1], walks[e, 2], walks[e, 3], walks[e, 4], walks[e, 5] = edge_walk(f, e, row, stride, rule)
 
 
 @njit(cache=True, inline="always")
 def walk_span(walks, row, rule, width):
     """Columns [first, last] on ``row`` of a triangle whose three edges are walked
-    (``walks``: their :func:`edge_walk` tuples, at this row), clamped to the image; the
-    same as :func:`row_span`."""
+    (``walks``: :func:`start_walks`, at this row), clamped to the image: the same as
+    :func:`row_span`. Then each walk moves one step on, in place.
+
+    Each edge narrows the span as :func:`scanline_span` says (a left edge from below, a
+    right edge from above; a horizontal edge keeps the row or empties it), then steps:
+    ``q·den + r`` plus ``dq·den + dr``, the remainder carried into the quotient when it
+    reaches ``den``. (Written out, not in helpers of its own: every function numba inlines
+    into the raster's kernel adds to the time a cold start spends compiling it.)"""
     first, last = -(1 << 62), 1 << 62
-    for w in walks:
-        first, last = edge_bound(w[0], w[1], w[2], row, rule, first, last)
+    for e in range(3):
+        kind, q, r, den = walks[e, 0], walks[e, 1], walks[e, 2], walks[e, 3]
+        if kind == LEFT:
+            first = max(first, -q if rule == TOP_LEFT else q + 1)
+        elif kind == RIGHT:
+            last = min(last, -q - 1 if rule == TOP_LEFT else q)
+        else:  # horizontal: q is its dx, r its corner's y; E = dx·(Y − ya)
+            e_val = q * (row * SUBPIXEL - r)
+            owned = q > 0 if rule == TOP_LEFT else q < 0
+            if e_val < 0 or (e_val == 0 and not owned):
+                first, last = 1, 0
+        q, r = q + walks[e, 4], r + walks[e, 5]
+        if r >= den:
+            q, r = q + 1, r - den
+        walks[e, 1], walks[e, 2] = q, r
     return max(first, 0), min(last, width - 1)
 
 
@@ -344,23 +341,23 @@ stretches of 2 rows were walked too, unchanged from 3 rows."""
 
 
 @njit(cache=True, inline="always")
-def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index):
+def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index, walks):
     """Fill rows ``lo … hi`` of triangle ``k`` (numbered ``first_index + k`` in the
-    visibility buffer): each row's span by walking the three edges (:func:`edge_walk`,
-    two divisions per edge for the whole stretch), then :func:`fill_span`. A stretch of
+    visibility buffer): each row's span by walking the three edges (:func:`start_walks`, two
+    divisions per edge for the whole stretch, then :func:`walk_span` row by row; ``walks``
+    (3, 6) int64 is the band's scratch for them), then :func:`fill_span`. A stretch of
     fewer than :data:`WALK_ROWS` rows takes :func:`row_span`'s one division per edge and row
     instead: setting up the walk costs more than it saves there."""
-    if hi - lo < WALK_ROWS - 1:
-        for row in range(lo, hi + 1):
-            first, last = row_span(k, row, setup.ccw, depth.shape[1], rule)
-            fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_index)
-        return
-    f = setup.ccw[k]
-    walks = (edge_walk(f, 0, lo, 1, rule), edge_walk(f, 1, lo, 1, rule), edge_walk(f, 2, lo, 1, rule))
+    width = depth.shape[1]
+    walk = hi - lo >= WALK_ROWS - 1
+    if walk:
+        start_walks(setup.ccw[k], lo, 1, rule, walks)
     for row in range(lo, hi + 1):
-        first, last = walk_span(walks, row, rule, depth.shape[1])
+        if walk:
+            first, last = walk_span(walks, row, rule, width)
+        else:
+            first, last = row_span(k, row, setup.ccw, width, rule)
         fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_index)
-        walks = (walk_on(walks[0]), walk_on(walks[1]), walk_on(walks[2]))
 
 
 @njit(cache=True, inline="always")
@@ -411,6 +408,7 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, clear, depth, tri_i
     """
     height, width = depth.shape
     for b in prange(n_bands):
+        walks = np.empty((3, 6), np.int64)  # the band's edge walks (fill_rows)
         if clear:
             for block in range(b, (height + BLOCK_ROWS - 1) // BLOCK_ROWS, n_bands):
                 for row in range(block * BLOCK_ROWS, min(block * BLOCK_ROWS + BLOCK_ROWS, height)):
@@ -422,7 +420,7 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, clear, depth, tri_i
             block = first_block_of_band(lo, b, n_bands)
             while block * BLOCK_ROWS <= hi:  # none when lo > hi (nothing to draw)
                 fill_rows(k, max(lo, block * BLOCK_ROWS), min(hi, block * BLOCK_ROWS + BLOCK_ROWS - 1), setup, rule,
-                          depth_test, first_index, depth, tri_index)
+                          depth_test, first_index, depth, tri_index, walks)
                 block += n_bands
 
 

@@ -505,13 +505,13 @@ def test_frame_depth_and_coverage_are_the_buffers_divided_and_compared_in_one_pa
 # --------------------------------------------------------------------------- edge walk
 def _walked_spans(f, lo, hi, stride, rule, width):
     """Every ``stride``-th row's span from ``lo`` to ``hi`` by walking the edges, and by one division per edge and row."""
-    from renderer.raster import edge_walk, row_span, walk_on, walk_span
-    walks = tuple(edge_walk(f, e, lo, stride, rule) for e in range(3))
+    from renderer.raster import row_span, start_walks, walk_span
+    walks = np.empty((3, 6), np.int64)
+    start_walks(f, lo, stride, rule, walks)
     walked, divided = [], []
     for row in range(lo, hi + 1, stride):
-        walked.append(walk_span(walks, row, rule, width))
+        walked.append(walk_span(walks, row, rule, width))  # and each walk one step on
         divided.append(row_span(0, row, f[None], width, rule))
-        walks = tuple(walk_on(w) for w in walks)
     empty = [(1, 0) if a > b else (a, b) for a, b in divided]
     return [(1, 0) if a > b else (a, b) for a, b in walked], empty
 
