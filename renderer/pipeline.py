@@ -31,7 +31,7 @@ from renderer.painter import painter_order
 from renderer.raster import BATCH, IndexedTriangles, frame_depth_and_coverage, rasterize_visibility, weight_planes
 from renderer.reflection.materials import any_flat
 from renderer.reflection.registry import material_table
-from renderer.shading import Fragments, ShadingInputs, face_normals, shade, to_8bit
+from renderer.shading import Fragments, ShadingInputs, face_normals, fragments, painted_from_held, shade, to_8bit
 from renderer.texture_sampling import texture_table
 from renderer.translucency import draw_translucent
 from renderer.transform import normal_matrix, transform_vertices
@@ -255,17 +255,24 @@ class Stages(NamedTuple):
     triangle: np.ndarray
 
 
-def shading_fragments(won: ClippedMesh, tri_index: np.ndarray, perspective: bool, ws=None) -> Fragments:
+def shading_fragments(won: ClippedMesh, tri_index: np.ndarray, perspective: bool, ws=None,
+                      planes: bool = True) -> Fragments:
     """The :class:`renderer.shading.Fragments` of the triangles that won a pixel (``won``,
     numbered as ``tri_index`` numbers them, :func:`renderer.visible.visible_triangles`):
     their corners and weights written out, their facing and the planes of their weights
-    (:func:`renderer.raster.weight_planes`: shading reads no depth plane, rows or spans)."""
+    (:func:`renderer.raster.weight_planes`: shading reads no depth plane, rows or spans).
+    ``planes`` False: their source triangles only, the rest empty, for a frame painted from
+    held colours (:func:`renderer.shading.painted_from_held`), which reads nothing more."""
+    if not planes:
+        source = np.ascontiguousarray(won.clip_source, dtype=np.int64)
+        return fragments(tri_index, np.empty((0, 6)), np.empty(0, np.bool_), np.empty((0, 3, 4)), np.empty((0, 3, 3)),
+                         source, perspective)
     tri_clip, clip_bary, clip_source = won.corners_written_out(ws, "visible")
     front, plane = empty(ws, "visible.front", won.count, np.bool_), empty(ws, "visible.plane", (won.count, 6))
     for a in range(0, won.count, BATCH):
         b = min(a + BATCH, won.count)
         weight_planes(won.corner_rows(a, b, ws, "visible.rows"), won.fixed, won.window, front[a:b], plane[a:b])
-    return Fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, perspective)
+    return fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, perspective)
 
 
 def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
@@ -324,7 +331,8 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
     perspective = (options.interpolation or scene.render.interpolation) == "perspective"
     rgb = np.empty((height, width, 3), np.uint8)
-    shade(shading_fragments(won, vis.tri_index, perspective, ws), geo, inputs,
+    frags = shading_fragments(won, vis.tri_index, perspective, ws, planes=not painted_from_held(inputs, options.spans))
+    shade(frags, geo, inputs,
           to_8bit(np.asarray(scene.image.background)), rgb, spans=options.spans)
     window_depth, coverage = frame_depth_and_coverage(vis)
     if translucent.any():

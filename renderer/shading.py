@@ -39,9 +39,9 @@ from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
                                          span_normal_only, spans_apply, store_span)
-from renderer.spans import face_toward_viewer, span_points, span_setup
+from renderer.spans import SpanTable, face_toward_viewer, span_points, span_setup, span_table
 from renderer.texture_sampling import modulate_texels, sample_texture
-from renderer.workspace import thread_workspace
+from renderer.workspace import empty, thread_workspace
 
 
 @njit(cache=True)
@@ -133,7 +133,10 @@ class Fragments(NamedTuple):
     the screen-space weights of a pixel are worked out (:func:`renderer.raster.screen_weights`);
     front (K,); tri_clip (K, 3, 4); clip_bary (K, 3, 3) weights in the source triangle;
     clip_source (K,) source triangle; perspective: weights made perspective-correct (else
-    screen-linear, see :func:`fragment_weights`).
+    screen-linear, see :func:`fragment_weights`); span_weights, span_corners, span_object: the
+    same triangles' span table (the fields of :class:`renderer.spans.SpanTable`, flat here:
+    numba passes no tuple inside a tuple into a parallel loop), what their spans start from,
+    gathered once (:func:`with_span_table`; empty until then, :func:`fragments`).
     """
 
     tri_index: np.ndarray
@@ -143,6 +146,30 @@ class Fragments(NamedTuple):
     clip_bary: np.ndarray
     clip_source: np.ndarray
     perspective: bool
+    span_weights: np.ndarray
+    span_corners: np.ndarray
+    span_object: np.ndarray
+
+
+def fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, perspective) -> Fragments:
+    """:class:`Fragments` of these clipped triangles, their span table still empty
+    (:func:`with_span_table` fills it, where a frame is shaded in spans)."""
+    return Fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, bool(perspective),
+                     np.empty((0, 11)), np.empty((0, 22), np.float32), np.empty(0, np.int64))
+
+
+def with_span_table(frags: Fragments, geo, ws=None, name: str = "fragments") -> Fragments:
+    """``frags`` with their span table (:func:`renderer.spans.span_table`), in workspace
+    buffers named after ``name``. Built where the shading kernels need it, not before: a frame
+    painted from its held colours (:func:`renderer.held_colours.paint_rows`) neither builds
+    nor compiles it."""
+    k = len(frags.clip_source)
+    table = SpanTable(empty(ws, f"{name}.span_weights", (k, 11)), empty(ws, f"{name}.span_corners", (k, 22), np.float32),
+                      empty(ws, f"{name}.span_object", k, np.int64))
+    if k:
+        span_table(frags.plane, frags.front, frags.tri_clip, frags.clip_bary, frags.clip_source, frags.perspective,
+                   geo, *table)
+    return frags._replace(span_weights=table.weights, span_corners=table.corners, span_object=table.object)
 
 
 class ShadingInputs(NamedTuple):
@@ -303,8 +330,8 @@ def light_span(o, row, c0, c1, consts, face, materials, lights, scratch, rgb):
 
 @njit(cache=True, inline="always")
 def object_of(k, frags, geo):
-    """The object of clipped triangle ``k``."""
-    return geo.tri_object[frags.clip_source[k]]
+    """The object of clipped triangle ``k`` (read from the span table: one lookup, not two)."""
+    return frags.span_object[k]
 
 
 @njit(cache=True, inline="always")
@@ -533,6 +560,15 @@ def shade_rows_lit_spans(frags, geo, materials, lights, held, background, n_band
                 col = end
 
 
+def painted_from_held(inputs: ShadingInputs, spans: bool = True) -> bool:
+    """True when :func:`shade` paints the frame from its held colours (every object
+    :func:`renderer.held_colours.all_held`, :func:`renderer.held_colours.paint_rows`): it
+    then reads the fragments' visibility buffer and source triangles only, not their planes,
+    corners or span table (:func:`renderer.pipeline.shading_fragments` leaves them empty)."""
+    return (spans and spans_cover_all(inputs.materials, inputs.textures, inputs.lights)
+            and all_held(inputs.materials, inputs.lights))
+
+
 def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, rgb: np.ndarray,
           n_bands: int | None = None, spans: bool = True) -> None:
     """Shade the visibility buffer ``frags`` into ``rgb`` (H, W, 3) uint8, window rows (the
@@ -541,14 +577,17 @@ def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, 
     path, for tests)."""
     height = frags.tri_index.shape[0]
     n_bands = shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height))
-    if spans and spans_cover_all(inputs.materials, inputs.textures, inputs.lights):
+    if painted_from_held(inputs, spans):
         held = held_colour_table(frags, geo, inputs.materials, inputs.lights, inputs.lit, thread_workspace())
         with one_band_at_a_time():
-            if all_held(inputs.materials, inputs.lights):
-                paint_rows(frags.tri_index, held, background, n_bands, rgb)
-            else:
-                shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, held, background, n_bands, rgb)
+            paint_rows(frags.tri_index, held, background, n_bands, rgb)
+    elif spans and spans_cover_all(inputs.materials, inputs.textures, inputs.lights):
+        held = held_colour_table(frags, geo, inputs.materials, inputs.lights, inputs.lit, thread_workspace())
+        frags = with_span_table(frags, geo, thread_workspace())  # outside one_band_at_a_time: a loop over triangles
+        with one_band_at_a_time():
+            shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, held, background, n_bands, rgb)
     else:
+        frags = with_span_table(frags, geo, thread_workspace())
         with one_band_at_a_time():
             shade_rows(frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, background, n_bands,
                        bool(spans), rgb)

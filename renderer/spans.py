@@ -18,14 +18,82 @@ span it is shaded in; divided by the vertices' clip w they stay affine, ``b_i = 
 an attribute is ``(Σ b_i·A_i) / Σ b_i`` with ``A_i`` the clipped vertex's attribute (the
 source vertices' attributes mixed by its clipping weights). Screen-linear interpolation
 takes ``w_i = 1``.
+
+**Span table.** Everything a span's set-up reads that does not depend on the row is
+gathered once a frame per clipped triangle, in draw order, into :class:`SpanTable`
+(:func:`span_table`): two rows of two tables instead of a chain of lookups (clipped
+triangle → source triangle → its vertices → their positions and normals), each of which
+missed the cache on a large mesh, where a triangle has one or two spans. The values are
+the same bits as working them out span by span (the same float64 expressions, the same
+casts to float32).
 """
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
-from renderer.jit import njit
+from renderer.jit import njit, prange
 
 F0, F1 = np.float32(0.0), np.float32(1.0)
+
+
+class SpanTable(NamedTuple):
+    """Per clipped triangle ``k`` (draw order), what each of its spans starts from (:func:`span_table`).
+
+    weights (K, 11) float64: ``anchor, px, y0, e1x, e1y, e2x, e2y, inv_a2, iw0, iw1, iw2`` —
+    the anchor column (floor of the first vertex's x), the anchor pixel's centre counted
+    from that vertex, its y, the two edge vectors and one over twice the signed area
+    (:func:`span_weights`), one over each clipped vertex's clip w (1 when screen-linear);
+    corners (K, 22) float32: the clipped vertices' view-space positions (9), their
+    unnormalised normals (9), the plane normal turned toward the viewer (3, zeros when the
+    frame has no face normals), and 1 on a front face, −1 on a back face;
+    object (K,) int64: the object the triangle belongs to.
+    """
+
+    weights: np.ndarray
+    corners: np.ndarray
+    object: np.ndarray
+
+
+@njit(cache=True, parallel=True)
+def span_table(plane, front, tri_clip, clip_bary, clip_source, perspective, geo, weights, corners, objects):
+    """Fill :class:`SpanTable`'s ``weights``, ``corners`` and ``objects`` for every clipped
+    triangle; each row is written by its own iteration (the same bytes on any number of threads)."""
+    with_face = geo.face_normals.shape[0] > 0
+    for k in prange(plane.shape[0]):
+        x0, y0 = plane[k, 0], plane[k, 1]
+        e1x, e1y, e2x, e2y = plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5]
+        anchor = np.floor(x0)
+        weights[k, 0], weights[k, 1], weights[k, 2] = anchor, anchor + 0.5 - x0, y0
+        weights[k, 3], weights[k, 4], weights[k, 5], weights[k, 6] = e1x, e1y, e2x, e2y
+        weights[k, 7] = 1.0 / (e1x * e2y - e2x * e1y)
+        for i in range(3):
+            weights[k, 8 + i] = 1.0 / tri_clip[k, i, 3] if perspective else 1.0
+        s = clip_source[k]
+        i0, i1, i2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
+        for i in range(3):
+            p = clipped_vertex(geo.verts_view, k, i, clip_bary, i0, i1, i2)
+            n = clipped_vertex(geo.normals_view, k, i, clip_bary, i0, i1, i2)
+            for c in range(3):
+                corners[k, 3 * i + c], corners[k, 9 + 3 * i + c] = p[c], n[c]
+        fx, fy, fz = face_toward_viewer(geo, s) if with_face else (0.0, 0.0, 0.0)
+        corners[k, 18], corners[k, 19], corners[k, 20] = np.float32(fx), np.float32(fy), np.float32(fz)
+        corners[k, 21] = F1 if front[k] else -F1
+        objects[k] = geo.tri_object[s]
+
+
+@njit(cache=True, inline="always")
+def table_weights(t, k, row, c0):
+    """:func:`span_weights` read from the span table's ``weights`` ``t``: the same values, the same bits."""
+    anchor, px, y0 = t[k, 0], t[k, 1], t[k, 2]
+    e1x, e1y, e2x, e2y, inv_a2 = t[k, 3], t[k, 4], t[k, 5], t[k, 6], t[k, 7]
+    py = row + 0.5 - y0
+    l1, l2 = (px * e2y - e2x * py) * inv_a2, (e1x * py - px * e1y) * inv_a2
+    b1, b2 = e2y * inv_a2, -e1y * inv_a2
+    l0, b0 = 1.0 - l1 - l2, -b1 - b2
+    w0, w1, w2 = t[k, 8], t[k, 9], t[k, 10]
+    return l0 * w0, b0 * w0, l1 * w1, b1 * w1, l2 * w2, b2 * w2, c0 - anchor
 
 
 @njit(cache=True, inline="always")
@@ -76,7 +144,8 @@ def face_toward_viewer(geo, s):
 @njit(cache=True, inline="always")
 def span_setup(k, row, c0, frags, geo, face):
     """The float32 constants of clipped triangle ``k``'s span on ``row`` from column ``c0``:
-    ``(weights, positions, normals, face_normal, sign)``.
+    ``(weights, positions, normals, face_normal, sign)``, read from the frame's span table
+    (``frags.span_weights`` and ``frags.span_corners``, :class:`SpanTable`).
 
     weights: (L0, B0, L1, B1, L2, B2, x) (:func:`span_weights`, x the first pixel's
     offset from the anchor); positions and normals: the clipped vertices' view-space
@@ -84,24 +153,19 @@ def span_setup(k, row, c0, frags, geo, face):
     plane normal turned toward the viewer (``face_normal``) instead of interpolating;
     sign: −1 on a back face (two-sided lighting), else 1.
     """
-    s = frags.clip_source[k]
-    tris, cb = geo.triangles, frags.clip_bary
-    i0, i1, i2 = tris[s, 0], tris[s, 1], tris[s, 2]
-    L0, B0, L1, B1, L2, B2, x = span_weights(k, row, c0, frags.plane, frags.tri_clip, frags.perspective)
+    L0, B0, L1, B1, L2, B2, x = table_weights(frags.span_weights, k, row, c0)
     weights = (np.float32(L0), np.float32(B0), np.float32(L1), np.float32(B1), np.float32(L2), np.float32(B2),
                np.float32(x))
-    pa, pb, pc = (clipped_vertex(geo.verts_view, k, 0, cb, i0, i1, i2), clipped_vertex(geo.verts_view, k, 1, cb, i0, i1, i2),
-                  clipped_vertex(geo.verts_view, k, 2, cb, i0, i1, i2))
+    c = frags.span_corners
+    pa, pb, pc = (c[k, 0], c[k, 1], c[k, 2]), (c[k, 3], c[k, 4], c[k, 5]), (c[k, 6], c[k, 7], c[k, 8])
     if face:
-        fx, fy, fz = face_toward_viewer(geo, s)
         na = nb = nc = (F0, F0, F0)
+        face_normal = (c[k, 18], c[k, 19], c[k, 20])
     else:
-        fx = fy = fz = 0.0
-        na, nb, nc = (clipped_vertex(geo.normals_view, k, 0, cb, i0, i1, i2),
-                      clipped_vertex(geo.normals_view, k, 1, cb, i0, i1, i2),
-                      clipped_vertex(geo.normals_view, k, 2, cb, i0, i1, i2))
-    sign = F1 if frags.front[k] or face else -F1
-    return weights, (pa, pb, pc), (na, nb, nc), (np.float32(fx), np.float32(fy), np.float32(fz)), sign
+        na, nb, nc = (c[k, 9], c[k, 10], c[k, 11]), (c[k, 12], c[k, 13], c[k, 14]), (c[k, 15], c[k, 16], c[k, 17])
+        face_normal = (F0, F0, F0)
+    sign = F1 if face else c[k, 21]
+    return weights, (pa, pb, pc), (na, nb, nc), face_normal, sign
 
 
 @njit(cache=True, inline="always")

@@ -45,7 +45,7 @@ from renderer.bands import first_row_of_band, one_band_at_a_time, raster_bands, 
 from renderer.fragment_spans import batch_points, light_batch, lit_in_batches, span_linear_colours
 from renderer.raster import DEPTH_CLEAR, FILL_RULES, pixel_depth, row_depth, row_span, set_up
 from renderer.reflection.materials import PIXEL_FACE_NORMAL
-from renderer.shading import Fragments, ShadingInputs, span_scratch, unorm8
+from renderer.shading import ShadingInputs, fragments, span_scratch, unorm8, with_span_table
 from renderer.workspace import empty
 
 OIT, DEPTH_PEELING, SORTED = 0, 1, 2
@@ -540,9 +540,9 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
     tri_fixed = np.ascontiguousarray(clipped.tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(clipped.tri_window, dtype=np.float64).reshape(-1, 3, 3)
     setup = set_up(tri_fixed, tri_window, height, cull_back, ws, "translucency")
-    frags = Fragments(np.empty((0, 0), np.int32), setup.plane, setup.front, np.ascontiguousarray(clipped.tri_clip),
-                      np.ascontiguousarray(clipped.clip_bary), np.ascontiguousarray(clipped.clip_source),
-                      bool(perspective))
+    frags = with_span_table(fragments(np.empty((0, 0), np.int32), setup.plane, setup.front,
+                                      np.ascontiguousarray(clipped.tri_clip), np.ascontiguousarray(clipped.clip_bary),
+                                      np.ascontiguousarray(clipped.clip_source), perspective), geo, ws, "translucency")
     seen = empty(ws, "translucency.seen", (height, width), np.int32)
     strip_bands = raster_bands((height + STRIP_ROWS - 1) // STRIP_ROWS)
     shading = (setup, frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit,

@@ -14,7 +14,9 @@ from renderer.lit_colours import LitColours
 from renderer.pipeline import SceneGeometry
 from renderer.raster import screen_weights, set_up
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
-from renderer.shading import Fragments, face_normals, fragment_colour
+from renderer.shading import face_normals, fragment_colour
+from renderer.shading import fragments as make_fragments
+from renderer.shading import with_span_table
 from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, Textures, pack_lanes
 from renderer.window import SUBPIXEL
 
@@ -37,8 +39,9 @@ def geometry():
 def fragments(geo):
     fixed = np.rint(WINDOW[..., :2] * SUBPIXEL).astype(np.int64) - SUBPIXEL // 2
     setup = set_up(fixed, WINDOW, 32, False)
-    return Fragments(np.empty((0, 0), np.int32), setup.plane, setup.front, geo.verts_clip[None].copy(),
-                     np.eye(3)[None].copy(), np.zeros(1, np.int64), True)
+    return with_span_table(make_fragments(np.empty((0, 0), np.int32), setup.plane, setup.front,
+                                          geo.verts_clip[None].copy(), np.eye(3)[None].copy(), np.zeros(1, np.int64), True),
+                           geo)
 
 
 def textures(filter_mode, wrap):

@@ -424,3 +424,29 @@ def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, 
     assert bool(calls) == computed
     _, stages = render_stages(scene)
     assert np.allclose(np.linalg.norm(stages.geometry.face_normals, axis=1), 1.0)
+
+
+def test_a_frame_painted_from_held_colours_builds_no_planes_and_keeps_the_bytes(monkeypatch):
+    """Flat triangles under a lone headlight are painted from one colour each
+    (``painted_from_held``): the pipeline then hands shading their source triangles only —
+    no weight planes, corners or span table — and the frame is the plain path's, byte for
+    byte. A phong object needs them all."""
+    from renderer import RenderOptions, pipeline
+
+    seen = []
+    real = pipeline.shading_fragments
+
+    def spy(*args, **kwargs):
+        frags = real(*args, **kwargs)
+        seen.append((len(frags.clip_source), len(frags.plane), len(frags.tri_clip)))
+        return frags
+
+    monkeypatch.setattr(pipeline, "shading_fragments", spy)
+    flat = load_scene("icosphere:level=2").with_overrides(shading="flat", size=(64, 48))
+    fast = render(flat)
+    count, planes, corners = seen[-1]
+    assert count > 0 and planes == corners == 0
+    np.testing.assert_array_equal(fast.rgb, render(flat, RenderOptions(spans=False)).rgb)
+    render(tiny_scene())
+    count, planes, corners = seen[-1]
+    assert count > 0 and planes == corners == count

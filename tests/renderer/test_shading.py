@@ -12,8 +12,10 @@ from renderer.pipeline import SceneGeometry
 from renderer.reflection.materials import (FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED,
                                            VERTEX_COLOUR)
 from renderer.raster import screen_weights
-from renderer.shading import (Fragments, ShadingInputs, face_normals, fragment_weights, plane_normal, shade,
+from renderer.shading import (ShadingInputs, face_normals, fragment_weights, plane_normal, shade,
                               span_covers, span_tcoords, spans_cover_all, to_8bit)
+from renderer.shading import fragments as make_fragments
+from renderer.shading import with_span_table
 from renderer.texture_sampling import NEAREST, REPEAT, Textures, pack_lanes
 
 from .kernel_inputs import materials, preset_tables, view_lights
@@ -50,9 +52,9 @@ def fragments(geo, bary, front=True, perspective=False, clip_bary=None):
     plane[:, 1] = rows + 0.5 - bary[..., 1].reshape(-1)
     plane[:, 2], plane[:, 5] = 1.0, 1.0
     cb = np.eye(3) if clip_bary is None else np.asarray(clip_bary, np.float64)
-    return Fragments(np.arange(n, dtype=np.int32).reshape(height, width), plane, np.full(n, front),
-                     np.repeat(geo.verts_clip[None], n, axis=0), np.repeat(cb[None], n, axis=0),
-                     np.zeros(n, np.int64), perspective)
+    return make_fragments(np.arange(n, dtype=np.int32).reshape(height, width), plane, np.full(n, front),
+                           np.repeat(geo.verts_clip[None], n, axis=0), np.repeat(cb[None], n, axis=0),
+                           np.zeros(n, np.int64), perspective)
 
 
 def shade_all(frags, geo, mats, lit=None, textures=UNTEXTURED, lights=None, n_bands=None):
@@ -102,15 +104,18 @@ def test_a_spans_texture_coordinates_are_the_bits_of_its_pixels_one_at_a_time(pe
     rng = np.random.default_rng(11)
     n_src, k_clip = 12, 40
     tris = rng.integers(0, 30, (n_src, 3))
-    geo = triangle(np.zeros((3, 3)))._replace(triangles=tris, tcoords=rng.uniform(-2.0, 3.0, (30, 2)))
+    geo = triangle(np.zeros((3, 3)))._replace(
+        verts_view=rng.normal(size=(30, 3)), normals_view=rng.normal(size=(30, 3)), triangles=tris,
+        tri_object=np.zeros(n_src, np.int64), face_normals=np.zeros((n_src, 3)), tcoords=rng.uniform(-2.0, 3.0, (30, 2)))
     plane = np.zeros((k_clip, 11))
     plane[:, :2] = rng.uniform(0.0, 40.0, (k_clip, 2))
     plane[:, 2:6] = rng.uniform(-30.0, 30.0, (k_clip, 4))
     tri_clip = np.zeros((k_clip, 3, 4))
     tri_clip[:, :, 3] = rng.uniform(0.3, 6.0, (k_clip, 3))
     cb = rng.random((k_clip, 3, 3))
-    frags = Fragments(np.zeros((1, 1), np.int32), plane, np.ones(k_clip, np.bool_), tri_clip,
-                      cb / cb.sum(axis=2, keepdims=True), rng.integers(0, n_src, k_clip), perspective)
+    frags = make_fragments(np.zeros((1, 1), np.int32), plane, np.ones(k_clip, np.bool_), tri_clip,
+                            cb / cb.sum(axis=2, keepdims=True), rng.integers(0, n_src, k_clip), perspective)
+    frags = with_span_table(frags, geo)
     st = np.empty((2, 64))
     for k in range(k_clip):
         for row in range(30):

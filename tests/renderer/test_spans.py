@@ -16,7 +16,9 @@ from lab.scene import Camera, Image, Light, Material, RenderSettings, Scene, Sce
 from lab.normals import angle_weighted_normals
 from lab.shapes import cube, cylinder, icosphere, quad
 from renderer import RenderOptions, pipeline, render
-from renderer.shading import shade, span_tcoords
+from renderer.pipeline import SceneGeometry
+from renderer.shading import fragments, shade, span_tcoords, with_span_table
+from renderer.spans import clipped_vertex, face_toward_viewer, span_weights, table_weights
 from .single_thread import one_thread
 from .texture_filters import by_definition
 
@@ -108,6 +110,45 @@ def test_runs_across_thin_triangles_and_other_objects_keep_the_bytes(light):
     np.testing.assert_array_equal(fast.rgb, render(s, RenderOptions(spans=False)).rgb)
     with one_thread():
         np.testing.assert_array_equal(render(s).rgb, fast.rgb)
+
+
+def random_clipped_triangles(rng, k=60, n_src=9, n_verts=20, parallel=False):
+    """Clipped triangles of random planes, clip w, clipping weights and facing, cut from random
+    source triangles of one object (every table a span's set-up reads, nothing more)."""
+    plane = np.zeros((k, 11))
+    plane[:, :2] = rng.uniform(-5.0, 40.0, (k, 2))
+    plane[:, 2:6] = rng.uniform(-30.0, 30.0, (k, 4))
+    tri_clip = np.zeros((k, 3, 4))
+    tri_clip[:, :, 3] = rng.uniform(0.3, 6.0, (k, 3))
+    cb = rng.random((k, 3, 3))
+    geo = SceneGeometry(rng.normal(size=(n_verts, 3)), np.zeros((n_verts, 4)), rng.normal(size=(n_verts, 3)),
+                        rng.integers(0, n_verts, (n_src, 3)), rng.integers(0, 3, n_src), np.zeros(n_verts, np.int64),
+                        np.zeros((n_verts, 2)), rng.normal(size=(n_src, 3)), parallel)
+    return (plane, rng.random(k) < 0.5, tri_clip, cb / cb.sum(axis=2, keepdims=True), rng.integers(0, n_src, k)), geo
+
+
+@pytest.mark.parametrize("perspective", [True, False])
+@pytest.mark.parametrize("parallel", [False, True])
+def test_the_span_table_holds_the_bits_a_span_would_work_out(perspective, parallel):
+    """What a span's set-up reads from the span table (gathered once a frame) is, bit for
+    bit, what it worked out from the clipped and source triangles' tables span by span: the
+    weights on any row from any column, the clipped corners' positions and normals (float32
+    of their float64 mix), the plane normal toward the viewer, the facing and the object."""
+    rng = np.random.default_rng(5)
+    (plane, front, tri_clip, cb, source), geo = random_clipped_triangles(rng, parallel=parallel)
+    frags = with_span_table(fragments(np.zeros((1, 1), np.int32), plane, front, tri_clip, cb, source, perspective), geo)
+    for k in range(len(source)):
+        s = source[k]
+        i0, i1, i2 = geo.triangles[s]
+        for row, c0 in rng.integers(-3, 50, (5, 2)):
+            assert (table_weights(frags.span_weights, k, row, c0)
+                    == span_weights(k, row, c0, plane, tri_clip, perspective)), (k, row, c0)
+        corners = [clipped_vertex(geo.verts_view, k, i, cb, i0, i1, i2) for i in range(3)]
+        corners += [clipped_vertex(geo.normals_view, k, i, cb, i0, i1, i2) for i in range(3)]
+        expected = np.array([*np.concatenate(corners), *face_toward_viewer(geo, s), 1.0 if front[k] else -1.0],
+                            np.float32)
+        assert frags.span_corners[k].tobytes() == expected.tobytes(), k
+        assert frags.span_object[k] == geo.tri_object[s]
 
 
 def test_one_thread_and_two_give_the_same_bytes():
