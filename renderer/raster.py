@@ -12,9 +12,6 @@ Rules, each in one place:
 - **Scanline fill** (:func:`scanline_span`): for each pixel row, the span of pixel
   centres between the triangle's edges at the row's centre height. Coverage is decided
   exactly, in integers, on the snapped vertices.
-- **Edge walk** (:func:`edge_walk`): the raster finds a tall triangle's spans row after
-  row by stepping each edge's x by Δx/Δy, the fraction kept as an integer remainder: the
-  columns of :func:`scanline_span` without a division per row (:func:`fill_rows`).
 - **Top-left rule** (:func:`scanline_span`): a pixel centre lying exactly on an edge
   belongs to the triangle when the edge is a *left* edge or a *bottom* edge in window
   coordinates (y up) — a top-left rule in image coordinates (y down). So two triangles
@@ -113,85 +110,6 @@ def scanline_span(f, row, rule=TOP_LEFT):
             if e_val < 0 or (e_val == 0 and not owned):
                 return 1, 0
     return first, last
-
-
-LEFT, RIGHT, HORIZONTAL = 0, 1, 2
-"""What an edge of a counter-clockwise triangle bounds on a scanline (:func:`scanline_span`)."""
-
-NO_STEP = 1 << 62
-"""The divisor a horizontal edge's walk carries: its remainder never reaches it, so the walk
-never moves (:func:`edge_walk`)."""
-
-
-@njit(cache=True)
-def edge_walk(f, e, row, stride, rule):
-    """Edge ``e`` (corner e → e + 1) of a counter-clockwise fixed-point triangle ``f`` (3,
-    2) set up to be walked from pixel row ``row`` up, ``stride`` rows a step: the scanline
-    algorithm's edge increments, in exact integers.
-
-    :func:`scanline_span` bounds a row's columns by one quotient per edge, ``num / den``
-    with ``num`` linear in the row's height. Walking, the quotient is divided once here,
-    as ``q·den + r`` (0 ≤ r < den), and then moved by a fixed step ``dq·den + dr`` per row
-    (:func:`walk_span`): the x of the edge advances by Δx/Δy a row as in the course's
-    algorithm, the fraction kept as a remainder, so every row gets the same column as
-    :func:`scanline_span` (Bresenham's way: no division, no rounding error).
-    Returns ``(kind, q, r, den, dq, dr)``: ``kind`` :data:`LEFT`, :data:`RIGHT` or
-    :data:`HORIZONTAL` (then ``q, r`` are the edge's dx and its corner's y, for
-    :func:`walk_span`'s test, and the walk never moves). Called once an edge and stretch,
-    not inlined into the raster's kernel (less to compile, no slower)."""
-    xa, ya = f[e, 0], f[e, 1]
-    xb, yb = f[(e + 1) % 3, 0], f[(e + 1) % 3, 1]
-    dx, dy = xb - xa, yb - ya
-    if dy == 0:
-        return HORIZONTAL, dx, ya, NO_STEP, 0, 0
-    y = row * SUBPIXEL
-    if dy < 0:  # left edge: X ≥ (|dy|·xa − dx·(Y − ya)) / |dy|
-        kind, num, den, step = LEFT, -dy * xa - dx * (y - ya), -dy * SUBPIXEL, -dx * SUBPIXEL * stride
-    else:  # right edge: X < (dy·xa + dx·(Y − ya)) / dy
-        kind, num, den, step = RIGHT, dy * xa + dx * (y - ya), dy * SUBPIXEL, dx * SUBPIXEL * stride
-    if rule == TOP_LEFT:  # the bound is a ceiling: ⌈n / d⌉ = −⌊−n / d⌋, so walk −n
-        num, step = -num, -step
-    q, dq = num // den, step // den
-    return kind, q, num - q * den, den, dq, step - dq * den
-
-
-@njit(cache=True)
-def start_walks(f, row, stride, rule, walks):
-    """The three edges of triangle ``f`` set up to be walked from ``row``, ``stride`` rows a
-    step (:func:`edge_walk`), into ``walks`` (3, 6) int64: one edge's ``(kind, q, r, den, dq,
-    dr)`` a row."""
-    for e in range(3):
-        walks[e, 0], walks[e, 1], walks[e, 2], walks[e, 3], walks[e, 4], walks[e, 5] = edge_walk(f, e, row, stride, rule)
-
-
-@njit(cache=True, inline="always")
-def walk_span(walks, row, rule, width):
-    """Columns [first, last] on ``row`` of a triangle whose three edges are walked
-    (``walks``: :func:`start_walks`, at this row), clamped to the image: the same as
-    :func:`row_span`. Then each walk moves one step on, in place.
-
-    Each edge narrows the span as :func:`scanline_span` says (a left edge from below, a
-    right edge from above; a horizontal edge keeps the row or empties it), then steps:
-    ``q·den + r`` plus ``dq·den + dr``, the remainder carried into the quotient when it
-    reaches ``den``. (Written out, not in helpers of its own: every function numba inlines
-    into the raster's kernel adds to the time a cold start spends compiling it.)"""
-    first, last = -(1 << 62), 1 << 62
-    for e in range(3):
-        kind, q, r, den = walks[e, 0], walks[e, 1], walks[e, 2], walks[e, 3]
-        if kind == LEFT:
-            first = max(first, -q if rule == TOP_LEFT else q + 1)
-        elif kind == RIGHT:
-            last = min(last, -q - 1 if rule == TOP_LEFT else q)
-        else:  # horizontal: q is its dx, r its corner's y; E = dx·(Y − ya)
-            e_val = q * (row * SUBPIXEL - r)
-            owned = q > 0 if rule == TOP_LEFT else q < 0
-            if e_val < 0 or (e_val == 0 and not owned):
-                first, last = 1, 0
-        q, r = q + walks[e, 4], r + walks[e, 5]
-        if r >= den:
-            q, r = q + 1, r - den
-        walks[e, 1], walks[e, 2] = q, r
-    return max(first, 0), min(last, width - 1)
 
 
 @njit(cache=True, inline="always")
@@ -332,43 +250,16 @@ def pixel_fragment(k, row, col, plane):
     return l1, l2, pixel_depth(k, row_depth(k, row, plane), col, plane)
 
 
-WALK_ROWS = 3
-"""The fewest rows of a stretch whose spans :func:`fill_rows` finds by walking the edges.
-Measured (one thread, frame time, alternating processes, against one division per edge and
-row): the 1,024-segment cylinder at 512², tall thin triangles, 8.5–8.9 → 6.7–7.4 ms; the
-270k-triangle Igea scan at 1024², whose triangles span one to three rows, 3–5 % slower when
-stretches of 2 rows were walked too, unchanged from 3 rows."""
-
-
 @njit(cache=True, inline="always")
-def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index, walks):
-    """Fill rows ``lo … hi`` of triangle ``k`` (numbered ``first_index + k`` in the
-    visibility buffer): each row's span by walking the three edges (:func:`start_walks`, two
-    divisions per edge for the whole stretch, then :func:`walk_span` row by row; ``walks``
-    (3, 6) int64 is the band's scratch for them), then :func:`fill_span`. A stretch of
-    fewer than :data:`WALK_ROWS` rows takes :func:`row_span`'s one division per edge and row
-    instead: setting up the walk costs more than it saves there."""
-    width = depth.shape[1]
-    walk = hi - lo >= WALK_ROWS - 1
-    if walk:
-        start_walks(setup.ccw[k], lo, 1, rule, walks)
-    for row in range(lo, hi + 1):
-        if walk:
-            first, last = walk_span(walks, row, rule, width)
-        else:
-            first, last = row_span(k, row, setup.ccw, width, rule)
-        fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_index)
-
-
-@njit(cache=True, inline="always")
-def fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_index):
-    """Fill columns ``first … last`` of one scanline of triangle ``k``: depth test,
-    visibility-buffer writes (the triangle is numbered ``first_index + k`` there).
+def fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index):
+    """Fill one scanline of triangle ``k``: span, depth test, visibility-buffer writes (the
+    triangle is numbered ``first_index + k`` there).
 
     Each pixel of the span is written, with its old values where the test fails, instead of
     branching on the test: the loop then runs 4–8 pixels at a time, and a test that passes
     and fails at random (deep overdraw: a Menger sponge) costs no mispredicted branches.
     The depth is :func:`pixel_depth`'s, its triangle constants read once."""
+    first, last = row_span(k, row, setup.ccw, depth.shape[1], rule)
     z_row = row_depth(k, row, setup.plane)
     zx, ax = setup.plane[k, 9], setup.plane[k, 6]
     kk = np.int32(first_index + k)
@@ -408,7 +299,6 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, clear, depth, tri_i
     """
     height, width = depth.shape
     for b in prange(n_bands):
-        walks = np.empty((3, 6), np.int64)  # the band's edge walks (fill_rows)
         if clear:
             for block in range(b, (height + BLOCK_ROWS - 1) // BLOCK_ROWS, n_bands):
                 for row in range(block * BLOCK_ROWS, min(block * BLOCK_ROWS + BLOCK_ROWS, height)):
@@ -419,8 +309,8 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, clear, depth, tri_i
             lo, hi = setup.rows[k, 0], setup.rows[k, 1]
             block = first_block_of_band(lo, b, n_bands)
             while block * BLOCK_ROWS <= hi:  # none when lo > hi (nothing to draw)
-                fill_rows(k, max(lo, block * BLOCK_ROWS), min(hi, block * BLOCK_ROWS + BLOCK_ROWS - 1), setup, rule,
-                          depth_test, first_index, depth, tri_index, walks)
+                for row in range(max(lo, block * BLOCK_ROWS), min(hi, block * BLOCK_ROWS + BLOCK_ROWS - 1) + 1):
+                    fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index)
                 block += n_bands
 
 
