@@ -44,7 +44,7 @@ class SpanTable(NamedTuple):
     weights (K, 11) float64: ``anchor, px, y0, e1x, e1y, e2x, e2y, inv_a2, iw0, iw1, iw2`` —
     the anchor column (floor of the first vertex's x), the anchor pixel's centre counted
     from that vertex, its y, the two edge vectors and one over twice the signed area
-    (:func:`span_weights`), one over each clipped vertex's clip w (1 when screen-linear);
+    (:func:`table_weights`), one over each clipped vertex's clip w (1 when screen-linear);
     corners (K, 22) float32: the clipped vertices' view-space positions (9), their
     unnormalised normals (9), the plane normal turned toward the viewer (3, zeros when the
     frame has no face normals), and 1 on a front face, −1 on a back face;
@@ -85,7 +85,10 @@ def span_table(plane, front, tri_clip, clip_bary, clip_source, perspective, geo,
 
 @njit(cache=True, inline="always")
 def table_weights(t, k, row, c0):
-    """:func:`span_weights` read from the span table's ``weights`` ``t``: the same values, the same bits."""
+    """Float64 ``(L0, B0, L1, B1, L2, B2, x)`` from the span table's ``weights`` ``t``: clipped
+    triangle ``k``'s weights of its three vertices on ``row`` at its anchor column and their
+    step per pixel to the right, each divided by its vertex's clip w (times 1 when
+    screen-linear); ``x`` is the span's first pixel ``c0`` counted from the anchor."""
     anchor, px, y0 = t[k, 0], t[k, 1], t[k, 2]
     e1x, e1y, e2x, e2y, inv_a2 = t[k, 3], t[k, 4], t[k, 5], t[k, 6], t[k, 7]
     py = row + 0.5 - y0
@@ -94,27 +97,6 @@ def table_weights(t, k, row, c0):
     l0, b0 = 1.0 - l1 - l2, -b1 - b2
     w0, w1, w2 = t[k, 8], t[k, 9], t[k, 10]
     return l0 * w0, b0 * w0, l1 * w1, b1 * w1, l2 * w2, b2 * w2, c0 - anchor
-
-
-@njit(cache=True, inline="always")
-def span_weights(k, row, c0, plane, tri_clip, perspective):
-    """Float64 ``(L0, B0, L1, B1, L2, B2, x)``: clipped triangle ``k``'s weights of its three
-    vertices on ``row`` at its anchor column and their step per pixel to the right, divided
-    by the vertices' clip w when ``perspective``; ``x`` is the span's first pixel ``c0``
-    counted from the anchor."""
-    x0, y0, e1x, e1y, e2x, e2y = plane[k, 0], plane[k, 1], plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5]
-    inv_a2 = 1.0 / (e1x * e2y - e2x * e1y)
-    anchor = np.floor(x0)
-    py = row + 0.5 - y0
-    px = anchor + 0.5 - x0
-    l1, l2 = (px * e2y - e2x * py) * inv_a2, (e1x * py - px * e1y) * inv_a2
-    b1, b2 = e2y * inv_a2, -e1y * inv_a2
-    l0, b0 = 1.0 - l1 - l2, -b1 - b2
-    x = c0 - anchor
-    if perspective:
-        w0, w1, w2 = 1.0 / tri_clip[k, 0, 3], 1.0 / tri_clip[k, 1, 3], 1.0 / tri_clip[k, 2, 3]
-        return l0 * w0, b0 * w0, l1 * w1, b1 * w1, l2 * w2, b2 * w2, x
-    return l0, b0, l1, b1, l2, b2, x
 
 
 @njit(cache=True, inline="always")
@@ -147,7 +129,7 @@ def span_setup(k, row, c0, frags, geo, face):
     ``(weights, positions, normals, face_normal, sign)``, read from the frame's span table
     (``frags.span_weights`` and ``frags.span_corners``, :class:`SpanTable`).
 
-    weights: (L0, B0, L1, B1, L2, B2, x) (:func:`span_weights`, x the first pixel's
+    weights: (L0, B0, L1, B1, L2, B2, x) (:func:`table_weights`, x the first pixel's
     offset from the anchor); positions and normals: the clipped vertices' view-space
     positions and (unnormalised) normals, 9 values each; ``face``: use the triangle's own
     plane normal turned toward the viewer (``face_normal``) instead of interpolating;
