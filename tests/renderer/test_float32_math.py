@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from renderer.float32_math import exp2_f32, log2_f32, pow_f32
+from renderer.float32_math import EXP_FLUSH, exp2_f32, log2_f32, pow_f32
 from renderer.jit import njit
 from renderer.reflection.vtk_spans import to8
 
@@ -51,6 +51,21 @@ def test_log2_and_exp2_by_their_own_accuracy():
     np.testing.assert_allclose(exps, 2.0 ** (-20.0 * X.astype(np.float64)), rtol=2e-6)
     assert log2_f32(np.float32(1.0)) == 0.0 and log2_f32(np.float32(0.25)) == -2.0
     assert exp2_f32(np.float32(0.0)) == 1.0 and exp2_f32(np.float32(-3.0)) == 0.125
+
+
+@pytest.mark.parametrize("power", [20.0, 40.0, 128.0])
+def test_a_power_below_2_to_the_minus_100_is_zero_so_no_product_of_it_is_subnormal(power):
+    """Powers that small are flushed to 0: kept, a specular factor near float32's smallest
+    normal number makes subnormal products with the material's and the light's colours,
+    each a slow microcode assist. Everything at or above 2⁻⁹⁹ is kept."""
+    out = np.empty_like(X)
+    _pow_all(X, np.float32(power), out)
+    exact = X.astype(np.float64) ** power
+    assert np.all(out[exact < 2.0 ** -101] == 0.0)
+    assert np.all(out[exact > 2.0 ** -99] > 0.0)
+    tiny = out[(out > 0.0)].min()
+    assert tiny >= 2.0 ** -100.5 and (np.float32(tiny) * np.float32(0.3) * np.float32(2.0 ** -20)) >= np.finfo(np.float32).tiny
+    assert exp2_f32(np.float32(EXP_FLUSH - 0.5)) == 0.0 and exp2_f32(EXP_FLUSH) == np.float32(2.0 ** -100)
 
 
 def test_to8_rounds_half_to_even_as_rint_does():
