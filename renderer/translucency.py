@@ -347,6 +347,31 @@ def resolve_oit_row(sums, seen, row, rgb, behind, out):
             rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = out[0], out[1], out[2]
 
 
+@njit(cache=True, inline="always")
+def nearest_in_row(opaque_depth, row):
+    """The least (nearest) opaque depth on ``row`` of ``opaque_depth`` (H, W) int32:
+    :data:`~renderer.raster.DEPTH_CLEAR` on a row with no opaque surface."""
+    nearest = DEPTH_CLEAR
+    for col in range(opaque_depth.shape[1]):
+        nearest = min(nearest, opaque_depth[row, col])
+    return nearest
+
+
+@njit(cache=True, inline="always")
+def span_in_front(k, z_row, first, last, plane, nearest):
+    """True when every fragment of triangle ``k``'s span ``first … last`` on a row passes the
+    depth test against that row's opaque surface, whose nearest depth is ``nearest``
+    (:func:`nearest_in_row`): the span's depth is linear along the row, so its largest is
+    at one end (:func:`~renderer.raster.pixel_depth`, monotonic), and LEQUAL against the
+    row's nearest opaque depth passes at every pixel if it passes there. The span is then
+    one run, found with two depths instead of one a pixel (a translucent object in front
+    of everything opaque, or with nothing opaque on the row: every span)."""
+    if first > last:
+        return True
+    far = max(pixel_depth(k, z_row, first, plane), pixel_depth(k, z_row, last, plane))
+    return far <= nearest
+
+
 class RunRules(NamedTuple):
     """How :func:`shade_fragments` draws: strips of :data:`STRIP_ROWS` rows dealt to
     ``n_bands`` bands, the fill ``rule`` (a :data:`renderer.raster.FILL_RULES` code),
@@ -404,11 +429,13 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
         batch = batch_scratch(width)  # a triangle's runs on a strip: points, colours, (row, c0, count)
         behind = np.empty(3, np.int64)
         out = np.empty(3, np.int64)
+        nearest = np.empty(STRIP_ROWS, np.int32)  # the nearest opaque depth of each of the strip's rows
         for strip in range(b, n_strips, n_bands):
             lo, hi = strip * STRIP_ROWS, min(strip * STRIP_ROWS + STRIP_ROWS, height) - 1
             for row in range(lo, hi + 1):
                 for col in range(width):
                     seen[row, col] = 0
+                nearest[row - lo] = nearest_in_row(opaque_depth, row)
             for k in range(setup.ccw.shape[0]):
                 o = geo.tri_object[frags.clip_source[k]]
                 a = np.float32(materials.opacity[o])
@@ -418,9 +445,13 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                 for row in range(max(setup.rows[k, 0], lo), min(setup.rows[k, 1], hi) + 1):
                     first, last = row_span(k, row, setup.ccw, width, rule)
                     z_row = row_depth(k, row, setup.plane)
+                    whole = spans and (not depth_test or span_in_front(k, z_row, first, last, setup.plane,
+                                                                       nearest[row - lo]))
                     col = first
                     while col <= last:
                         c0 = col
+                        if whole:  # one run, no test a pixel
+                            col = last + 1
                         while col <= last and (not depth_test
                                                or pixel_depth(k, z_row, col, setup.plane) <= opaque_depth[row, col]):
                             col += 1
