@@ -500,3 +500,95 @@ def test_frame_depth_and_coverage_are_the_buffers_divided_and_compared_in_one_pa
     np.testing.assert_array_equal(window_depth, depth_to_window(depth))
     np.testing.assert_array_equal(covered, tri_index != EMPTY)
     assert window_depth[tri_index == EMPTY].tolist() == [1.0] * int((tri_index == EMPTY).sum())
+# --------------------------------------------------------------------------- edge walk
+def _walked_spans(f, lo, hi, stride, rule, width):
+    """Every ``stride``-th row's span from ``lo`` to ``hi`` by walking the edges, and by one division per edge and row."""
+    from renderer.raster import edge_walk, row_span, walk_on, walk_span
+    walks = tuple(edge_walk(f, e, lo, stride, rule) for e in range(3))
+    walked, divided = [], []
+    for row in range(lo, hi + 1, stride):
+        walked.append(walk_span(walks, row, rule, width))
+        divided.append(row_span(0, row, f[None], width, rule))
+        walks = tuple(walk_on(w) for w in walks)
+    empty = [(1, 0) if a > b else (a, b) for a, b in divided]
+    return [(1, 0) if a > b else (a, b) for a, b in walked], empty
+
+
+@pytest.mark.parametrize("rule", ["top-left", "bottom-right"])
+@pytest.mark.parametrize("stride", [1, 3])
+def test_walking_the_edges_gives_every_row_the_span_of_dividing_for_it(rule, stride):
+    """The edge walk (x stepped by Δx/Δy a row, the fraction kept as a remainder) finds the
+    same columns as one division per edge and row: on tall thin triangles whose edges cross
+    thousands of rows, with horizontal edges and with corners on pixel centres (ties)."""
+    from renderer.raster import FILL_RULES
+    rng = np.random.default_rng(7)
+    cases = [np.array([[0, 0], [3 * SUBPIXEL + 17, 2000 * SUBPIXEL + 5], [-SUBPIXEL + 3, 1999 * SUBPIXEL]]),
+             np.array([[0, 0], [40 * SUBPIXEL, 0], [13 * SUBPIXEL, 30 * SUBPIXEL]]),      # horizontal bottom edge
+             np.array([[0, 30 * SUBPIXEL], [13 * SUBPIXEL, 0], [40 * SUBPIXEL, 30 * SUBPIXEL]])]  # horizontal top edge
+    cases += [rng.integers(-60 * SUBPIXEL, 60 * SUBPIXEL, (3, 2)) // rng.choice([1, SUBPIXEL]) * rng.choice([1, SUBPIXEL])
+              for _ in range(60)]
+    checked = 0
+    for f in cases:
+        area = (f[1, 0] - f[0, 0]) * (f[2, 1] - f[0, 1]) - (f[2, 0] - f[0, 0]) * (f[1, 1] - f[0, 1])
+        if area == 0:
+            continue
+        f = np.ascontiguousarray(f if area > 0 else f[[0, 2, 1]], dtype=np.int64)
+        lo, hi = int(f[:, 1].min()) // SUBPIXEL - 2, -(-int(f[:, 1].max()) // SUBPIXEL) + 2
+        walked, divided = _walked_spans(f, lo, hi, stride, FILL_RULES[rule], 1 << 20)
+        assert walked == divided, f"triangle {f.tolist()}"
+        checked += sum(a <= b for a, b in divided)
+    assert checked > 3000 // stride
+
+
+def test_tall_thin_triangles_are_drawn_as_the_reference_draws_them():
+    """Triangles tall enough to be walked (the fast path of fill_rows), beside short ones that
+    are divided row by row, cover exactly the reference rasteriser's pixels."""
+    width, height = 23, 90
+    fixed = np.array([[[2 * SUBPIXEL + 40, -SUBPIXEL], [5 * SUBPIXEL + 3, 95 * SUBPIXEL], [3 * SUBPIXEL, 88 * SUBPIXEL + 200]],
+                      [[20 * SUBPIXEL, 10 * SUBPIXEL], [8 * SUBPIXEL + 77, 80 * SUBPIXEL + 1], [9 * SUBPIXEL, 3 * SUBPIXEL]],
+                      [[10 * SUBPIXEL, 40 * SUBPIXEL], [14 * SUBPIXEL, 41 * SUBPIXEL + 30], [11 * SUBPIXEL, 42 * SUBPIXEL + 99]]],
+                     np.int64)
+    for f in fixed:
+        w = np.concatenate([f / SUBPIXEL + 0.5, np.full((3, 1), 0.5)], axis=1)
+        _, tri_index, _, _ = rasterize_triangles(f[None], w[None], width, height)
+        expected = reference_coverage(f, width, height)
+        assert expected.any()
+        np.testing.assert_array_equal(tri_index >= 0, expected, err_msg=f"triangle {f.tolist()}")
+
+
+@pytest.mark.parametrize("rule", ["top-left", "bottom-right"])
+@pytest.mark.parametrize("depth_test", [True, False])
+def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth_test):
+    """rasterize_walking (spans by edge walks) and rasterize (a division per edge and row) on
+    the same set-up: 240 triangles of every kind (ties, slivers, huge, off-screen) and 40 tall
+    thin ones over them, drawn together so that depth ties and overdraw count: the same
+    depth and triangle at every pixel. is_tall sends the tall batch to the walking kernel."""
+    from renderer.bands import raster_bands
+    from renderer.raster import (DEPTH_CLEAR, EMPTY, FILL_RULES, TALL_ROWS, is_tall, rasterize, rasterize_walking,
+                                 set_up)
+    width, height = 37, 90
+    rng = np.random.default_rng(5)
+    small = random_triangles(rng, 240, width, height)
+    x = rng.integers(0, width * SUBPIXEL, (40, 1))
+    tall = np.stack([np.concatenate([x, rng.integers(-3 * SUBPIXEL, 5 * SUBPIXEL, (40, 1))], 1),
+                     np.concatenate([x + rng.integers(1, 3 * SUBPIXEL, (40, 1)), rng.integers(80, 95, (40, 1)) * SUBPIXEL
+                                     + rng.integers(0, 2, (40, 1)) * 77], 1),
+                     np.concatenate([x + rng.integers(-SUBPIXEL, SUBPIXEL, (40, 1)), rng.integers(30, 60, (40, 1)) * SUBPIXEL], 1)],
+                    axis=1)
+    fixed = np.concatenate([small, tall]).astype(np.int64)
+    z = np.where(rng.random((len(fixed), 1)) < 0.5, 0.5, rng.uniform(0, 1, (len(fixed), 3)))
+    z[len(small):] = np.where(rng.random((40, 1)) < 0.5, 0.1, rng.uniform(0, 0.2, (40, 3)))  # in front, ties among them
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, z[..., None] * np.ones((len(fixed), 3, 1))], axis=2)
+    setup = set_up(fixed, window, height, False)
+    buffers = []
+    for kernel in (rasterize, rasterize_walking):
+        depth, tri_index = np.empty((height, width), np.int32), np.empty((height, width), np.int32)
+        kernel(setup, raster_bands(height, 3), FILL_RULES[rule], depth_test, 0, True, depth, tri_index)
+        buffers.append((depth, tri_index))
+    np.testing.assert_array_equal(buffers[1][1], buffers[0][1])
+    np.testing.assert_array_equal(buffers[1][0], buffers[0][0])
+    assert len(np.unique(buffers[0][1][buffers[0][1] >= len(small)])) > 30  # the tall ones really show
+    assert (buffers[0][1] != EMPTY).mean() > 0.5 and (buffers[0][0] < DEPTH_CLEAR).any()
+    assert is_tall(set_up(tall, window[len(small):], height, False)) and not is_tall(set_up(small[:1] * 0, window[:1], height, False))
+    rows = set_up(tall, window[len(small):], height, False).rows
+    assert (rows[:, 1] - rows[:, 0] + 1).mean() >= TALL_ROWS
