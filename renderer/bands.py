@@ -67,11 +67,24 @@ def first_block_of_band(lo, band, n_bands):
     """The first block (of :data:`BLOCK_ROWS` rows) that ``band`` owns among the blocks from
     the one holding row ``lo`` on (block j belongs to band j mod n_bands)."""
     first = lo // BLOCK_ROWS
-    return first + (band - first) % n_bands
+    return first + band_offset(band - first, n_bands)
 
 
 @njit(cache=True, inline="always")
 def first_row_of_band(lo, band, n_bands):
     """The first row ≥ ``lo`` that ``band`` owns (rows r with r mod n_bands = band)."""
-    return lo + (band - lo) % n_bands
+    return lo + band_offset(band - lo, n_bands)
+
+
+@njit(cache=True, inline="always")
+def band_offset(d, n_bands):
+    """``d mod n_bands`` (0 … n_bands − 1, also for a negative ``d``): a mask when ``n_bands``
+    is a power of two, as :func:`raster_bands` gives by default (two per thread on one or
+    two threads), else a division. The scan-conversion loops ask this once per triangle
+    and band: an integer division each time took 4–5 % of a frame of the 270k-triangle
+    Igea scan and of a level-4 Menger sponge (two threads, four bands)."""
+    if n_bands & (n_bands - 1) == 0:
+        return d & (n_bands - 1)
+    return d % n_bands
+
 

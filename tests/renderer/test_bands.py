@@ -3,7 +3,7 @@ and how many bands a loop uses."""
 import numba
 import pytest
 
-from renderer.bands import BLOCK_ROWS, SHADING_BANDS, first_block_of_band, first_row_of_band, raster_bands, shading_bands
+from renderer.bands import BLOCK_ROWS, SHADING_BANDS, band_offset, first_block_of_band, first_row_of_band, raster_bands, shading_bands
 
 
 @pytest.mark.parametrize("lo, band, n_bands, first", [(0, 0, 4, 0), (0, 3, 4, 3), (5, 2, 4, 6), (5, 1, 4, 5),
@@ -12,6 +12,13 @@ def test_first_row_of_band(lo, band, n_bands, first):
     """Band b owns rows r with r mod n = b: from row 5, band 2 of 4 starts at 6, band 1 at 5; from 6, band 1 at 9."""
     assert first_row_of_band(lo, band, n_bands) == first
     assert first % n_bands == band and lo <= first < lo + n_bands
+
+
+def test_band_offset_is_the_remainder_with_a_mask_or_a_division():
+    """``d mod n`` in 0 … n − 1 for negative and positive ``d``: masked for powers of two (1, 2,
+    4, 8, 64), divided for the rest."""
+    for n in [1, 2, 3, 4, 5, 6, 7, 8, 12, 64]:
+        assert [band_offset(d, n) for d in range(-130, 130)] == [d % n for d in range(-130, 130)]
 
 
 def test_every_row_goes_to_exactly_one_band():
