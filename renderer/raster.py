@@ -12,7 +12,7 @@ Rules, each in one place:
 - **Scanline fill** (:func:`scanline_span`): for each pixel row, the span of pixel
   centres between the triangle's edges at the row's centre height. Coverage is decided
   exactly, in integers, on the snapped vertices.
-- **Edge walk** (:func:`edge_walk`): for tall triangles the raster finds the spans row after
+- **Edge walk** (:mod:`renderer.edge_walk`): for tall triangles the raster finds the spans row after
   row by stepping each edge's x by Δx/Δy, the fraction kept as an integer remainder: the
   columns of :func:`scanline_span` without a division per row (:func:`fill_rows`).
 - **Top-left rule** (:func:`scanline_span`): a pixel centre lying exactly on an edge
@@ -38,6 +38,7 @@ import numpy as np
 from renderer.jit import njit, prange
 
 from renderer.bands import BLOCK_ROWS, first_block_of_band, one_band_at_a_time, raster_bands
+from renderer.edge_walk import edge_walk, walk_on, walk_span
 from renderer.window import SUBPIXEL
 from renderer.workspace import empty
 
@@ -113,88 +114,6 @@ def scanline_span(f, row, rule=TOP_LEFT):
             if e_val < 0 or (e_val == 0 and not owned):
                 return 1, 0
     return first, last
-
-
-LEFT, RIGHT, HORIZONTAL = 0, 1, 2
-"""What an edge of a counter-clockwise triangle bounds on a scanline (:func:`scanline_span`)."""
-
-NO_STEP = 1 << 62
-"""The divisor a horizontal edge's walk carries: its remainder never reaches it, so the walk
-never moves (:func:`edge_walk`)."""
-
-
-@njit(cache=True, inline="always")
-def edge_walk(f, e, row, stride, rule):
-    """Edge ``e`` (corner e → e + 1) of a counter-clockwise fixed-point triangle ``f`` (3,
-    2) set up to be walked from pixel row ``row`` up, ``stride`` rows a step: the scanline
-    algorithm's edge increments, in exact integers.
-
-    :func:`scanline_span` bounds a row's columns by one quotient per edge, ``num / den``
-    with ``num`` linear in the row's height. Walking, the quotient is divided once here,
-    as ``q·den + r`` (0 ≤ r < den), and then moved by a fixed step ``dq·den + dr`` per row
-    (:func:`edge_step`): the x of the edge advances by Δx/Δy a row as in the course's
-    algorithm, the fraction kept as a remainder, so every row gets the same column as
-    :func:`scanline_span` (Bresenham's way: no division, no rounding error).
-    Returns ``(kind, q, r, den, dq, dr)``: ``kind`` :data:`LEFT`, :data:`RIGHT` or
-    :data:`HORIZONTAL` (then ``q, r`` are the edge's dx and its corner's y, for
-    :func:`walk_span`'s test, and the walk never moves)."""
-    xa, ya = f[e, 0], f[e, 1]
-    xb, yb = f[(e + 1) % 3, 0], f[(e + 1) % 3, 1]
-    dx, dy = xb - xa, yb - ya
-    if dy == 0:
-        return HORIZONTAL, dx, ya, NO_STEP, 0, 0
-    y = row * SUBPIXEL
-    if dy < 0:  # left edge: X ≥ (|dy|·xa − dx·(Y − ya)) / |dy|
-        kind, num, den, step = LEFT, -dy * xa - dx * (y - ya), -dy * SUBPIXEL, -dx * SUBPIXEL * stride
-    else:  # right edge: X < (dy·xa + dx·(Y − ya)) / dy
-        kind, num, den, step = RIGHT, dy * xa + dx * (y - ya), dy * SUBPIXEL, dx * SUBPIXEL * stride
-    if rule == TOP_LEFT:  # the bound is a ceiling: ⌈n / d⌉ = −⌊−n / d⌋, so walk −n
-        num, step = -num, -step
-    q, dq = num // den, step // den
-    return kind, q, num - q * den, den, dq, step - dq * den
-
-
-@njit(cache=True, inline="always")
-def edge_step(q, r, den, dq, dr):
-    """One step of an edge walk (:func:`edge_walk`): ``q·den + r`` plus ``dq·den + dr``, the
-    remainder carried into the quotient when it reaches ``den``."""
-    q, r = q + dq, r + dr
-    if r >= den:
-        q, r = q + 1, r - den
-    return q, r
-
-
-@njit(cache=True, inline="always")
-def edge_bound(kind, q, r, row, rule, first, last):
-    """The row's span ``[first, last]`` narrowed by one walked edge (:func:`edge_walk`), as
-    :func:`scanline_span` narrows it; a horizontal edge that keeps nothing empties it."""
-    if kind == LEFT:
-        return max(first, -q if rule == TOP_LEFT else q + 1), last
-    if kind == RIGHT:
-        return first, min(last, -q - 1 if rule == TOP_LEFT else q)
-    e_val = q * (row * SUBPIXEL - r)  # the horizontal edge's function: dx·(Y − ya)
-    owned = q > 0 if rule == TOP_LEFT else q < 0
-    if e_val < 0 or (e_val == 0 and not owned):
-        return 1, 0
-    return first, last
-
-
-@njit(cache=True, inline="always")
-def walk_on(w):
-    """An edge walk (:func:`edge_walk`) one step on."""
-    q, r = edge_step(w[1], w[2], w[3], w[4], w[5])
-    return w[0], q, r, w[3], w[4], w[5]
-
-
-@njit(cache=True, inline="always")
-def walk_span(walks, row, rule, width):
-    """Columns [first, last] on ``row`` of a triangle whose three edges are walked
-    (``walks``: their :func:`edge_walk` tuples, at this row), clamped to the image; the
-    same as :func:`row_span`."""
-    first, last = -(1 << 62), 1 << 62
-    for w in walks:
-        first, last = edge_bound(w[0], w[1], w[2], row, rule, first, last)
-    return max(first, 0), min(last, width - 1)
 
 
 @njit(cache=True, inline="always")
@@ -351,7 +270,7 @@ triangle): 7.7–8.2 → 6.4–6.9 ms."""
 @njit(cache=True, inline="always")
 def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index):
     """Fill rows ``lo … hi`` of triangle ``k`` (numbered ``first_index + k`` in the
-    visibility buffer): each row's span by walking the three edges (:func:`edge_walk`,
+    visibility buffer): each row's span by walking the three edges (:func:`renderer.edge_walk.edge_walk`,
     two divisions per edge for the whole stretch), then :func:`fill_span`. A stretch of
     fewer than :data:`WALK_ROWS` rows takes :func:`fill_row`'s one division per edge and row
     instead."""
@@ -359,10 +278,10 @@ def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index)
         for row in range(lo, hi + 1):
             fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index)
         return
-    f = setup.ccw[k]
-    walks = (edge_walk(f, 0, lo, 1, rule), edge_walk(f, 1, lo, 1, rule), edge_walk(f, 2, lo, 1, rule))
+    f, top_left = setup.ccw[k], rule == TOP_LEFT
+    walks = (edge_walk(f, 0, lo, 1, top_left), edge_walk(f, 1, lo, 1, top_left), edge_walk(f, 2, lo, 1, top_left))
     for row in range(lo, hi + 1):
-        first, last = walk_span(walks, row, rule, depth.shape[1])
+        first, last = walk_span(walks, row, top_left, depth.shape[1])
         fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_index)
         walks = (walk_on(walks[0]), walk_on(walks[1]), walk_on(walks[2]))
 

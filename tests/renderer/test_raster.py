@@ -500,46 +500,7 @@ def test_frame_depth_and_coverage_are_the_buffers_divided_and_compared_in_one_pa
     np.testing.assert_array_equal(window_depth, depth_to_window(depth))
     np.testing.assert_array_equal(covered, tri_index != EMPTY)
     assert window_depth[tri_index == EMPTY].tolist() == [1.0] * int((tri_index == EMPTY).sum())
-# --------------------------------------------------------------------------- edge walk
-def _walked_spans(f, lo, hi, stride, rule, width):
-    """Every ``stride``-th row's span from ``lo`` to ``hi`` by walking the edges, and by one division per edge and row."""
-    from renderer.raster import edge_walk, row_span, walk_on, walk_span
-    walks = tuple(edge_walk(f, e, lo, stride, rule) for e in range(3))
-    walked, divided = [], []
-    for row in range(lo, hi + 1, stride):
-        walked.append(walk_span(walks, row, rule, width))
-        divided.append(row_span(0, row, f[None], width, rule))
-        walks = tuple(walk_on(w) for w in walks)
-    empty = [(1, 0) if a > b else (a, b) for a, b in divided]
-    return [(1, 0) if a > b else (a, b) for a, b in walked], empty
-
-
-@pytest.mark.parametrize("rule", ["top-left", "bottom-right"])
-@pytest.mark.parametrize("stride", [1, 3])
-def test_walking_the_edges_gives_every_row_the_span_of_dividing_for_it(rule, stride):
-    """The edge walk (x stepped by Δx/Δy a row, the fraction kept as a remainder) finds the
-    same columns as one division per edge and row: on tall thin triangles whose edges cross
-    thousands of rows, with horizontal edges and with corners on pixel centres (ties)."""
-    from renderer.raster import FILL_RULES
-    rng = np.random.default_rng(7)
-    cases = [np.array([[0, 0], [3 * SUBPIXEL + 17, 2000 * SUBPIXEL + 5], [-SUBPIXEL + 3, 1999 * SUBPIXEL]]),
-             np.array([[0, 0], [40 * SUBPIXEL, 0], [13 * SUBPIXEL, 30 * SUBPIXEL]]),      # horizontal bottom edge
-             np.array([[0, 30 * SUBPIXEL], [13 * SUBPIXEL, 0], [40 * SUBPIXEL, 30 * SUBPIXEL]])]  # horizontal top edge
-    cases += [rng.integers(-60 * SUBPIXEL, 60 * SUBPIXEL, (3, 2)) // rng.choice([1, SUBPIXEL]) * rng.choice([1, SUBPIXEL])
-              for _ in range(60)]
-    checked = 0
-    for f in cases:
-        area = (f[1, 0] - f[0, 0]) * (f[2, 1] - f[0, 1]) - (f[2, 0] - f[0, 0]) * (f[1, 1] - f[0, 1])
-        if area == 0:
-            continue
-        f = np.ascontiguousarray(f if area > 0 else f[[0, 2, 1]], dtype=np.int64)
-        lo, hi = int(f[:, 1].min()) // SUBPIXEL - 2, -(-int(f[:, 1].max()) // SUBPIXEL) + 2
-        walked, divided = _walked_spans(f, lo, hi, stride, FILL_RULES[rule], 1 << 20)
-        assert walked == divided, f"triangle {f.tolist()}"
-        checked += sum(a <= b for a, b in divided)
-    assert checked > 3000 // stride
-
-
+# --------------------------------------------------------------------------- the walking kernel
 def test_tall_thin_triangles_are_drawn_as_the_reference_draws_them():
     """Triangles tall enough to be walked (the fast path of fill_rows), beside short ones that
     are divided row by row, cover exactly the reference rasteriser's pixels."""
