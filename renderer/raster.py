@@ -263,8 +263,8 @@ TALL_ROWS = 16
 :data:`renderer.bands.BLOCK_ROWS`) for :func:`rasterize` to walk their edges
 (:func:`is_tall`). Below it, one division per edge and row: the walk's kernel then is not
 even compiled, which keeps a first frame of small triangles (the start-up bar) as quick
-as it was. Measured, one thread, the 1,024-segment cylinder at 512² (127 rows a
-triangle): 7.7–8.2 → 6.4–6.9 ms."""
+as it was. Measured, one thread, alternating processes, the 1,024-segment cylinder at
+512² (127 rows a triangle): 12.5–12.8 → 10.0–10.3 ms a frame."""
 
 
 @njit(cache=True, inline="always")
@@ -272,11 +272,10 @@ def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index)
     """Fill rows ``lo … hi`` of triangle ``k`` (numbered ``first_index + k`` in the
     visibility buffer): each row's span by walking the three edges (:func:`renderer.edge_walk.edge_walk`,
     two divisions per edge for the whole stretch), then :func:`fill_span`. A stretch of
-    fewer than :data:`WALK_ROWS` rows takes :func:`fill_row`'s one division per edge and row
-    instead."""
+    fewer than :data:`WALK_ROWS` rows takes one division per edge and row instead
+    (:func:`fill_rows_dividing`)."""
     if hi - lo < WALK_ROWS - 1:
-        for row in range(lo, hi + 1):
-            fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index)
+        fill_rows_dividing(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index)
         return
     f, top_left = setup.ccw[k], rule == TOP_LEFT
     walks = (edge_walk(f, 0, lo, 1, top_left), edge_walk(f, 1, lo, 1, top_left), edge_walk(f, 2, lo, 1, top_left))
@@ -330,9 +329,10 @@ def fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_in
 @njit(cache=True, inline="always")
 def draw_band(b, setup, n_bands, rule, depth_test, first_index, clear, depth, tri_index, fill_stretch):
     """Band ``b``'s share of :func:`rasterize`: clear its rows (with ``clear``), then draw every
-    triangle on them, in order, a block at a time. ``walk``, a constant where it is inlined
-    (so the branch not taken is never compiled): find the spans by walking the edges
-    (:func:`fill_rows`) instead of one division per edge and row (:func:`fill_row`)."""
+    triangle on them, in order, a block at a time, each block's rows ``top … bottom`` of
+    triangle ``k`` filled by ``fill_stretch(k, top, bottom, …)``: :func:`fill_rows_dividing`
+    (one division per edge and row) or :func:`fill_rows` (the edges walked). Each kernel
+    passes its own, inlined there, so the dividing kernel never compiles the walk."""
     height, width = depth.shape
     if clear:
         for block in range(b, (height + BLOCK_ROWS - 1) // BLOCK_ROWS, n_bands):
