@@ -14,19 +14,16 @@ from __future__ import annotations
 from renderer.jit import njit
 from renderer.window import SUBPIXEL
 
-LEFT, RIGHT, HORIZONTAL = 0, 1, 2
-"""What an edge of a counter-clockwise triangle bounds on a scanline (:func:`renderer.raster.scanline_span`)."""
-
-NO_STEP = 1 << 62
-"""The divisor a horizontal edge's walk carries: its remainder never reaches it, so the walk
-never moves (:func:`edge_walk`)."""
+LEFT, RIGHT = 0, 1
+"""What an edge of a counter-clockwise triangle bounds on a scanline (:func:`renderer.raster.scanline_span`):
+a left edge (going down, dy < 0) the first column, a right edge (dy > 0) the last."""
 
 
 @njit(cache=True, inline="always")
 def edge_walk(f, e, row, stride, top_left):
-    """Edge ``e`` (corner e → e + 1) of a counter-clockwise fixed-point triangle ``f`` (3,
-    2) set up to be walked from pixel row ``row`` up, ``stride`` rows a step: the scanline
-    algorithm's edge increments, in exact integers.
+    """Edge ``e`` (corner e → e + 1, not horizontal) of a counter-clockwise fixed-point
+    triangle ``f`` (3, 2) set up to be walked from pixel row ``row`` up, ``stride`` rows a
+    step: the scanline algorithm's edge increments, in exact integers.
 
     :func:`renderer.raster.scanline_span` bounds a row's columns by one quotient per edge, ``num / den``
     with ``num`` linear in the row's height. Walking, the quotient is divided once here,
@@ -34,14 +31,11 @@ def edge_walk(f, e, row, stride, top_left):
     (:func:`edge_step`): the x of the edge advances by Δx/Δy a row as in the course's
     algorithm, the fraction kept as a remainder, so every row gets the same column as
     :func:`renderer.raster.scanline_span` (Bresenham's way: no division, no rounding error).
-    Returns ``(kind, q, r, den, dq, dr)``: ``kind`` :data:`LEFT`, :data:`RIGHT` or
-    :data:`HORIZONTAL` (then ``q, r`` are the edge's dx and its corner's y, for
-    :func:`walk_span`'s test, and the walk never moves)."""
+    Returns ``(kind, q, r, den, dq, dr)``, ``kind`` :data:`LEFT` or :data:`RIGHT`
+    (:func:`column_bound` reads the column from it)."""
     xa, ya = f[e, 0], f[e, 1]
     xb, yb = f[(e + 1) % 3, 0], f[(e + 1) % 3, 1]
     dx, dy = xb - xa, yb - ya
-    if dy == 0:
-        return HORIZONTAL, dx, ya, NO_STEP, 0, 0
     y = row * SUBPIXEL
     if dy < 0:  # left edge: X ≥ (|dy|·xa − dx·(Y − ya)) / |dy|
         kind, num, den, step = LEFT, -dy * xa - dx * (y - ya), -dy * SUBPIXEL, -dx * SUBPIXEL * stride
@@ -64,21 +58,6 @@ def edge_step(q, r, den, dq, dr):
 
 
 @njit(cache=True, inline="always")
-def edge_bound(kind, q, r, row, top_left, first, last):
-    """The row's span ``[first, last]`` narrowed by one walked edge (:func:`edge_walk`), as
-    :func:`renderer.raster.scanline_span` narrows it; a horizontal edge that keeps nothing empties it."""
-    if kind == LEFT:
-        return max(first, -q if top_left else q + 1), last
-    if kind == RIGHT:
-        return first, min(last, -q - 1 if top_left else q)
-    e_val = q * (row * SUBPIXEL - r)  # the horizontal edge's function: dx·(Y − ya)
-    owned = q > 0 if top_left else q < 0
-    if e_val < 0 or (e_val == 0 and not owned):
-        return 1, 0
-    return first, last
-
-
-@njit(cache=True, inline="always")
 def walk_on(w):
     """An edge walk (:func:`edge_walk`) one step on."""
     q, r = edge_step(w[1], w[2], w[3], w[4], w[5])
@@ -86,11 +65,56 @@ def walk_on(w):
 
 
 @njit(cache=True, inline="always")
-def walk_span(walks, row, top_left, width):
-    """Columns [first, last] on ``row`` of a triangle whose three edges are walked
-    (``walks``: their :func:`edge_walk` tuples, at this row), clamped to the image; the
-    same as :func:`renderer.raster.row_span`."""
-    first, last = -(1 << 62), 1 << 62
-    for w in walks:
-        first, last = edge_bound(w[0], w[1], w[2], row, top_left, first, last)
-    return max(first, 0), min(last, width - 1)
+def column_bound(w, top_left):
+    """The column a walked edge (:func:`edge_walk`) bounds its row by, as
+    :func:`renderer.raster.scanline_span` has it: a left edge's first column inside, a right
+    edge's first column past the span (its last column + 1)."""
+    return -w[1] if top_left else w[1] + 1
+
+
+@njit(cache=True, inline="always")
+def split_at_middle(f, lo, hi, top_left):
+    """The course's split of a counter-clockwise fixed-point triangle ``f`` (3, 2) at its middle
+    corner (by height), for walking rows ``lo … hi`` of it: on every row one edge bounds the
+    span on the left and one on the right, so two edges are walked instead of three.
+
+    The *long* edge joins the lowest and the highest corner and bounds every row on one
+    side; on the other, the *low* edge (lowest → middle corner) bounds the rows below the
+    middle corner and the *high* edge (middle → highest) the rows from it up. The third
+    edge's bound never narrows a row it does not cross (the triangle is convex: it lies on
+    the inner side of that edge's line), so the span is :func:`renderer.raster.scanline_span`'s, to the column.
+
+    Returns ``(long, low, high, split, lo, hi)``: the three edges' numbers (edge e runs from
+    corner e to e + 1), ``split`` the first row walked with the high edge, and ``lo … hi``
+    narrowed by a horizontal edge's rule (the row exactly on a horizontal edge belongs to the
+    triangle only if the edge is a bottom one, top-left rule; a top one, bottom-right rule).
+    A horizontal edge is never walked: it is the low edge of a flat-bottomed triangle, whose
+    rows all lie at or above the middle corner, or the high edge of a flat-topped one, whose
+    rows are then all walked with the low edge."""
+    y0, y1, y2 = f[0, 1], f[1, 1], f[2, 1]
+    low = 0 if y0 <= y1 and y0 <= y2 else (1 if y1 <= y2 else 2)
+    high = (low + 1) % 3 if f[(low + 1) % 3, 1] >= f[(low + 2) % 3, 1] else (low + 2) % 3
+    mid = 3 - low - high
+    y_low, y_mid, y_high = f[low, 1], f[mid, 1], f[high, 1]
+    long_edge = low if (low + 1) % 3 == high else high
+    low_edge = low if (low + 1) % 3 == mid else mid
+    high_edge = mid if (mid + 1) % 3 == high else high
+    if y_mid == y_high:  # flat top: the low edge bounds every row
+        split = hi + 1
+        if top_left and y_high % SUBPIXEL == 0:  # a top edge does not own the row on it
+            hi = min(hi, y_high // SUBPIXEL - 1)
+    else:
+        split = -((-y_mid) // SUBPIXEL)  # the first row at or above the middle corner
+    if y_mid == y_low and not top_left and y_low % SUBPIXEL == 0:  # bottom-right: a bottom edge does not own its row
+        lo = max(lo, y_low // SUBPIXEL + 1)
+    return long_edge, low_edge, high_edge, split, lo, hi
+
+
+@njit(cache=True, inline="always")
+def walked_columns(long_walk, short_walk, top_left, width):
+    """Columns [first, last] of a row from the walks (:func:`edge_walk`) of its two bounding
+    edges (:func:`split_at_middle`), clamped to the image (first > last: none)."""
+    long_bound, short_bound = column_bound(long_walk, top_left), column_bound(short_walk, top_left)
+    if long_walk[0] == LEFT:
+        return max(long_bound, 0), min(short_bound - 1, width - 1)
+    return max(short_bound, 0), min(long_bound - 1, width - 1)

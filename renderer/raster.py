@@ -38,7 +38,7 @@ import numpy as np
 from renderer.jit import njit, prange
 
 from renderer.bands import BLOCK_ROWS, first_block_of_band, one_band_at_a_time, raster_bands
-from renderer.edge_walk import edge_walk, walk_on, walk_span
+from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
 from renderer.window import SUBPIXEL
 from renderer.workspace import empty
 
@@ -270,19 +270,38 @@ as it was. Measured, one thread, alternating processes, the 1,024-segment cylind
 @njit(cache=True, inline="always")
 def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index):
     """Fill rows ``lo … hi`` of triangle ``k`` (numbered ``first_index + k`` in the
-    visibility buffer): each row's span by walking the three edges (:func:`renderer.edge_walk.edge_walk`,
-    two divisions per edge for the whole stretch), then :func:`fill_span`. A stretch of
-    fewer than :data:`WALK_ROWS` rows takes one division per edge and row instead
-    (:func:`fill_rows_dividing`)."""
+    visibility buffer) by walking its edges: split at its middle corner
+    (:func:`renderer.edge_walk.split_at_middle`), each row's span is bounded by the long edge
+    and by the low or the high one, both stepped row by row (:func:`fill_walked`; two divisions
+    per edge for the whole stretch). A stretch of fewer than :data:`WALK_ROWS` rows takes one
+    division per edge and row instead (:func:`fill_rows_dividing`)."""
     if hi - lo < WALK_ROWS - 1:
         fill_rows_dividing(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index)
         return
     f, top_left = setup.ccw[k], rule == TOP_LEFT
-    walks = (edge_walk(f, 0, lo, 1, top_left), edge_walk(f, 1, lo, 1, top_left), edge_walk(f, 2, lo, 1, top_left))
+    long_edge, low_edge, high_edge, split, lo, hi = split_at_middle(f, lo, hi, top_left)
+    long_walk = edge_walk(f, long_edge, lo, 1, top_left)
+    if lo < split:
+        long_walk = fill_walked(k, lo, min(hi, split - 1), long_walk, edge_walk(f, low_edge, lo, 1, top_left),
+                                setup, top_left, depth_test, first_index, depth, tri_index)
+    top = max(lo, split)
+    if top <= hi:
+        fill_walked(k, top, hi, long_walk, edge_walk(f, high_edge, top, 1, top_left),
+                    setup, top_left, depth_test, first_index, depth, tri_index)
+
+
+@njit(cache=True, inline="always")
+def fill_walked(k, lo, hi, long_walk, short_walk, setup, top_left, depth_test, first_index, depth, tri_index):
+    """Fill rows ``lo … hi`` of triangle ``k``, each row's span between its two walked edges
+    (:func:`renderer.edge_walk.walked_columns`), then both edges a row on; returns the long
+    edge's walk at row ``hi + 1``. The triangle's depth plane is read once for the stretch."""
+    plane, kk, width = setup.plane, np.int32(first_index + k), depth.shape[1]
+    ax, ay, az, zx, zy = plane[k, 6], plane[k, 7], plane[k, 8], plane[k, 9], plane[k, 10]
     for row in range(lo, hi + 1):
-        first, last = walk_span(walks, row, top_left, depth.shape[1])
-        fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_index)
-        walks = (walk_on(walks[0]), walk_on(walks[1]), walk_on(walks[2]))
+        first, last = walked_columns(long_walk, short_walk, top_left, width)
+        fill_columns(row, first, last, az + zy * (row + 0.5 - ay), zx, ax, kk, depth_test, depth, tri_index)
+        long_walk, short_walk = walk_on(long_walk), walk_on(short_walk)
+    return long_walk
 
 
 @njit(cache=True, inline="always")
@@ -301,16 +320,22 @@ def fill_row(k, row, setup, rule, depth_test, first_index, depth, tri_index):
 
 @njit(cache=True, inline="always")
 def fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_index):
-    """Fill columns ``first … last`` of one scanline of triangle ``k``: depth test,
-    visibility-buffer writes (the triangle is numbered ``first_index + k`` there).
+    """Fill columns ``first … last`` of one scanline of triangle ``k`` (numbered
+    ``first_index + k`` in the visibility buffer): :func:`fill_columns` with the triangle's
+    depth along the row (:func:`row_depth`, and the plane's slope in x)."""
+    fill_columns(row, first, last, row_depth(k, row, setup.plane), setup.plane[k, 9], setup.plane[k, 6],
+                 np.int32(first_index + k), depth_test, depth, tri_index)
+
+
+@njit(cache=True, inline="always")
+def fill_columns(row, first, last, z_row, zx, ax, kk, depth_test, depth, tri_index):
+    """Fill columns ``first … last`` of scanline ``row`` with triangle ``kk``, whose depth at a
+    pixel centre is :func:`pixel_depth`'s ``z_row + zx·(col + 0.5 − ax)``: depth test,
+    visibility-buffer writes.
 
     Each pixel of the span is written, with its old values where the test fails, instead of
     branching on the test: the loop then runs 4–8 pixels at a time, and a test that passes
-    and fails at random (deep overdraw: a Menger sponge) costs no mispredicted branches.
-    The depth is :func:`pixel_depth`'s, its triangle constants read once."""
-    z_row = row_depth(k, row, setup.plane)
-    zx, ax = setup.plane[k, 9], setup.plane[k, 6]
-    kk = np.int32(first_index + k)
+    and fails at random (deep overdraw: a Menger sponge) costs no mispredicted branches."""
     depth_row, index_row = depth[row], tri_index[row]
     if not depth_test:
         for col in range(first, last + 1):
