@@ -254,17 +254,21 @@ def pixel_fragment(k, row, col, plane):
     return l1, l2, pixel_depth(k, row_depth(k, row, plane), col, plane)
 
 
-WALK_ROWS = 3
+WALK_ROWS = 4
 """The fewest rows of a stretch whose spans :func:`fill_rows` finds by walking the edges: setting
-up a walk costs more than it saves on fewer (measured on the 270k-triangle Igea scan)."""
+up a walk costs more than it saves on fewer. Measured, one thread, the raster alone, with the
+two-edge walk: 4 against 3 rows, the 270k-triangle Igea scan at 1024² 31.5 → 30.6 ms, a
+level-4 Menger sponge at 512² 86.8 → 83.7; 2 rows was slower than 3 on both."""
 
-TALL_ROWS = 16
-"""The rows a batch's triangles must span on average (a block's height,
-:data:`renderer.bands.BLOCK_ROWS`) for :func:`rasterize` to walk their edges
-(:func:`is_tall`). Below it, one division per edge and row: the walk's kernel then is not
-even compiled, which keeps a first frame of small triangles (the start-up bar) as quick
-as it was. Measured, one thread, alternating processes, the 1,024-segment cylinder at
-512² (127 rows a triangle): 12.5–12.8 → 10.0–10.3 ms a frame."""
+TALL_ROWS = 4
+"""The rows a batch's triangles must span on average for :func:`rasterize_walking` to draw
+it (:func:`is_tall`); below it, :func:`rasterize`, one division per edge and row. The walk's
+kernel holds the dividing loop too (for short stretches), and is the slower of the two
+where nearly every stretch is that short. Measured, one thread, the raster alone, dividing
+→ walking kernel: ico5 at 512² (9.5 rows a triangle) 5.57 → 4.86 ms, a level-3 Menger
+sponge at 512² (9–11) 12.7 → 10.6, a level-4 one at 1024² (5–6) 151 → 146, ico7 at 1024²
+(4.9) 52.9 → 51.4; but ico7 at 512² (2.5) 29.1 → 30.7 and a level-4 sponge at 512² (2.9)
+79.2 → 86.8."""
 
 
 @njit(cache=True, inline="always")
