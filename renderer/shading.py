@@ -39,7 +39,7 @@ from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
                                          span_normal_only, spans_apply, store_span)
-from renderer.spans import SpanTable, face_toward_viewer, span_points, span_setup, span_table
+from renderer.spans import LANES, SpanTable, face_toward_viewer, span_points, span_setup, span_table, whole_lanes
 from renderer.texture_sampling import modulate_texels, sample_texture
 from renderer.workspace import empty, thread_workspace
 
@@ -345,10 +345,12 @@ def lit_per_pixel(o, materials, lights):
 
 @njit(cache=True, inline="always")
 def span_scratch(width):
-    """Scratch of a row: ``(points (6, W), colour (3, W))`` float32 (see :func:`shade_lit_run`)
-    and ``st`` (2, W) float64, a span's texture coordinates (:func:`modulate_span`)."""
-    return (np.empty((6, max(width, 1)), np.float32), np.empty((3, max(width, 1)), np.float32),
-            np.empty((2, max(width, 1))))
+    """Scratch of a row: ``(points (6, W + 7), colour (3, W))`` float32 (see :func:`shade_lit_run`)
+    and ``st`` (2, W + 7) float64, a span's texture coordinates (:func:`modulate_span`); the
+    points and coordinates have room for a span's whole vector lanes
+    (:func:`renderer.spans.whole_lanes`) past the row's last column."""
+    return (np.empty((6, max(width, 1) + LANES - 1), np.float32), np.empty((3, max(width, 1)), np.float32),
+            np.empty((2, max(width, 1) + LANES - 1)))
 
 
 @njit(cache=True, inline="always")
@@ -370,8 +372,8 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start = col
-    while k != EMPTY:
-        span_points(span_setup(k, row, col, frags, geo, face), face, end - col, points, col)
+    while k != EMPTY:  # whole lanes: the points past a span's end are the next span's, written over next
+        span_points(span_setup(k, row, col, frags, geo, face), face, whole_lanes(end - col), points, col)
         col = end
         k, end = next_span_of(o, row, col, frags, geo)
     light_points(o, materials, lights, points, start, col - start, colour)
@@ -416,9 +418,9 @@ def shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start = col
-    while k != EMPTY:
-        span_points(span_setup(k, row, col, frags, geo, face), face, end - col, points, col)
-        span_tcoords(k, row, col, end - col, frags, geo, st)
+    while k != EMPTY:  # whole lanes: the points past a span's end are the next span's, written over next
+        span_points(span_setup(k, row, col, frags, geo, face), face, whole_lanes(end - col), points, col)
+        span_tcoords(k, row, col, whole_lanes(end - col), frags, geo, st)
         col = end
         k, end = next_span_of(o, row, col, frags, geo)
     light_points(o, materials, lights, points, start, col - start, colour)

@@ -174,6 +174,19 @@ def span_pixel(consts, i, face):
     return px, py, pz, nx * scale, ny * scale, nz * scale
 
 
+LANES = 8
+"""float32 values in one of the vector registers the span loops run in (AVX2's 256 bits)."""
+
+
+@njit(cache=True, inline="always")
+def whole_lanes(count):
+    """``count`` rounded up to a multiple of :data:`LANES` when it fills a vector register at
+    least once: a loop over that many pixels then runs in vector steps alone, with no scalar
+    tail. A shorter count is kept (a thin triangle's span of a pixel or two is not worth a
+    vector register's eight)."""
+    return (count + LANES - 1) & -LANES if count >= LANES // 2 else count
+
+
 @njit(cache=True, inline="always")
 def span_points(consts, face, count, points, at):
     """The span's first ``count`` pixels (:func:`span_pixel`) into columns ``at`` … ``at +

@@ -277,3 +277,17 @@ def test_textured_runs_across_triangles_and_objects_keep_the_bytes(shading):
     np.testing.assert_array_equal(fast.rgb, render(s, RenderOptions(spans=False)).rgb)
     with one_thread():
         np.testing.assert_array_equal(render(s).rgb, fast.rgb)
+
+
+def test_a_span_of_half_a_vector_or_more_is_worked_out_in_whole_vectors():
+    """whole_lanes: counts of LANES/2 and more round up to whole vector registers (the points
+    past a span's end are the next span's, written over next; the row scratch has room past
+    the last column); a thinner span keeps its count, so a one-pixel sliver costs one pixel."""
+    from renderer.shading import span_scratch
+    from renderer.spans import LANES, whole_lanes
+
+    assert [whole_lanes(n) for n in range(LANES // 2)] == list(range(LANES // 2))
+    for n in range(LANES // 2, 5 * LANES):
+        assert whole_lanes(n) % LANES == 0 and n <= whole_lanes(n) < n + LANES
+    points, _, st = span_scratch(37)
+    assert points.shape[1] >= whole_lanes(37) and st.shape[1] >= whole_lanes(37)
