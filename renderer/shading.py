@@ -38,7 +38,7 @@ from renderer.lit_colours import face_colour
 from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
-                                         span_normal_only, spans_apply, store_span)
+                                         span_normal_only, spans_apply, store_run, store_span)
 from renderer.spans import LANES, SpanTable, face_toward_viewer, span_points, span_setup, span_table, whole_lanes
 from renderer.texture_sampling import modulate_texels, sample_texture
 from renderer.workspace import empty, thread_workspace
@@ -320,7 +320,7 @@ def light_span(o, row, c0, c1, consts, face, materials, lights, scratch, rgb):
     from :func:`renderer.spans.span_setup`), stored as 8 bits; when the colour cannot change
     along the span (a flat triangle whose model's colour depends on the normal alone), it is
     worked out at the first pixel and stored along it. ``scratch``: :func:`span_scratch`."""
-    points, colour, _ = scratch
+    points, colour, _, _ = scratch
     constant = face and span_normal_only(o, materials, lights)
     count = 1 if constant else c1 - c0
     reflect_span(o, materials, lights, consts, face, count, points, colour, rgb[row, c0:c0 + count])
@@ -345,12 +345,13 @@ def lit_per_pixel(o, materials, lights):
 
 @njit(cache=True, inline="always")
 def span_scratch(width):
-    """Scratch of a row: ``(points (6, W + 7), colour (3, W))`` float32 (see :func:`shade_lit_run`)
-    and ``st`` (2, W + 7) float64, a span's texture coordinates (:func:`modulate_span`); the
-    points and coordinates have room for a span's whole vector lanes
-    (:func:`renderer.spans.whole_lanes`) past the row's last column."""
+    """Scratch of a row: ``(points (6, W + 7), colour (3, W))`` float32 (see :func:`shade_lit_run`),
+    ``st`` (2, W + 7) float64, a span's texture coordinates (:func:`modulate_span`), and
+    ``packed`` (W,) uint32, a run's 8-bit colours on their way out
+    (:func:`renderer.reflection.registry.store_run`). The points and coordinates have room
+    for a span's whole vector lanes (:func:`renderer.spans.whole_lanes`) past the row's last column."""
     return (np.empty((6, max(width, 1) + LANES - 1), np.float32), np.empty((3, max(width, 1)), np.float32),
-            np.empty((2, max(width, 1) + LANES - 1)))
+            np.empty((2, max(width, 1) + LANES - 1)), np.empty(max(width, 1), np.uint32))
 
 
 @njit(cache=True, inline="always")
@@ -368,7 +369,7 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     code. ``inputs``: ``(materials, lights)``; ``scratch``: :func:`span_scratch`,
     the points at the pixels' own columns."""
     materials, lights = inputs
-    points, colour, _ = scratch
+    points, colour, _, packed = scratch
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start = col
@@ -377,7 +378,7 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
         col = end
         k, end = next_span_of(o, row, col, frags, geo)
     light_points(o, materials, lights, points, start, col - start, colour)
-    store_span(colour, col - start, rgb[row, start:col])
+    store_run(colour, col - start, packed, rgb[row, start:col])
     return col
 
 
@@ -414,7 +415,7 @@ def shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     ``(materials, textures, lights, lit)``. Kept apart from :func:`shade_lit_run`, whose
     kernel (:func:`shade_rows_lit_spans`) then compiles no texture code."""
     materials, textures, lights, _ = inputs
-    points, colour, st = scratch
+    points, colour, st, packed = scratch
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start = col
@@ -425,7 +426,7 @@ def shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
         k, end = next_span_of(o, row, col, frags, geo)
     light_points(o, materials, lights, points, start, col - start, colour)
     modulate_texels(textures, o, st, start, col - start, colour)
-    store_span(colour, col - start, rgb[row, start:col])
+    store_run(colour, col - start, packed, rgb[row, start:col])
     return col
 
 
@@ -474,7 +475,7 @@ def shade_span(k, row, c0, c1, frags, geo, inputs, scratch, rgb):
     if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
         consts = span_setup(k, row, c0, frags, geo, face)
         if textured:
-            points, colour, st = scratch
+            points, colour, st, _ = scratch
             span_colours(o, materials, lights, consts, face, c1 - c0, points, colour)
             modulate_span(k, row, c0, c1 - c0, frags, geo, textures, o, colour, st)
             store_span(colour, c1 - c0, rgb[row, c0:c1])

@@ -59,6 +59,9 @@ def vtk_normals_only(o, materials, lights) -> bool:
 ROUNDER = np.float32(2.0 ** 23)
 
 
+U8, U16, LOW8 = np.uint32(8), np.uint32(16), np.uint32(0xFF)
+
+
 @njit(cache=True, inline="always")
 def to8(v):
     """Linear 0..1 float32 → the framebuffer's 8 bits: round_half_even(clamp(v)·255), the
@@ -72,6 +75,22 @@ def store8(colour, count, out):
     """``colour`` (3, ≥ count) linear float32 → ``out`` (count, 3) uint8 (:func:`to8`)."""
     for i in range(count):
         out[i, 0], out[i, 1], out[i, 2] = to8(colour[0, i]), to8(colour[1, i]), to8(colour[2, i])
+
+
+@njit(cache=True, inline="always")
+def store8_packed(colour, count, packed, out):
+    """:func:`store8` in two loops: the 8-bit values of a pixel packed into one uint32
+    (``packed`` (≥ count,) scratch; r, g, b in bytes 0, 1, 2), eight pixels at a time, then
+    unpacked into ``out`` (count, 3). Three bytes a pixel is a store LLVM does not vectorise,
+    and one loop did both in scalar code: on runs of hundreds of pixels, 2.7 ns a pixel
+    against 1.0 (measured in a loop of its own)."""
+    for i in range(count):
+        j = np.uint64(i)  # unsigned: no wrap-around for a negative index, which keeps a loop scalar
+        packed[j] = (np.uint32(to8(colour[0, j])) | (np.uint32(to8(colour[1, j])) << U8)
+                     | (np.uint32(to8(colour[2, j])) << U16))
+    for i in range(count):
+        v = packed[i]
+        out[i, 0], out[i, 1], out[i, 2] = np.uint8(v & LOW8), np.uint8((v >> U8) & LOW8), np.uint8((v >> U16) & LOW8)
 
 
 @njit(cache=True, inline="always")

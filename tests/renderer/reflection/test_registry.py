@@ -67,3 +67,26 @@ def test_a_flat_textbook_object_is_lit_once_per_face():
     obj = SceneObject(mesh=smooth_quad(), shading="flat", material=Material(model="opengl"))
     assert material_table(Scene(image=Image(), camera=Camera(), lights=(), objects=(obj,))).shading_path.tolist() \
         == [FACE_COLOUR]
+
+
+def test_a_run_is_stored_through_packed_pixels_with_the_bytes_of_a_span():
+    """store_run (8-bit values packed a pixel to a uint32, then unpacked) writes exactly the
+    bytes store_span writes, for colours below 0, above 1, on rounding ties and in between,
+    on runs shorter and longer than a vector register; nothing past the run is touched."""
+    from renderer.jit import njit
+    from renderer.reflection.registry import store_run, store_span
+
+    @njit
+    def both(colour, count, packed, a, b):
+        store_span(colour, count, a)
+        store_run(colour, count, packed, b)
+
+    rng = np.random.default_rng(3)
+    ties = (np.arange(256) + 0.5).astype(np.float32) / np.float32(255)
+    for count in (1, 7, 8, 9, 300):
+        colour = rng.uniform(-0.2, 1.2, (3, 300)).astype(np.float32)
+        colour[:, ::3] = ties[rng.integers(0, 256, (3, 100))]
+        a, b = np.full((301, 3), 7, np.uint8), np.full((301, 3), 7, np.uint8)
+        both(colour, count, np.empty(300, np.uint32), a[:count], b[:count])
+        np.testing.assert_array_equal(b, a)
+        assert (a[count:] == 7).all() and len(np.unique(a[:count])) > min(count, 40)
