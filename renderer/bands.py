@@ -59,14 +59,15 @@ def one_band_at_a_time():
 
 BLOCK_ROWS = 16
 """Rows in a block of the opaque raster's bands: block j holds rows 16j … 16j + 15 and
-belongs to band j mod n_bands."""
+belongs to band j mod n_bands (the walking kernel deals blocks of 64,
+:data:`renderer.raster.WALK_BLOCK_ROWS`)."""
 
 
 @njit(cache=True, inline="always")
-def first_block_of_band(lo, band, n_bands):
-    """The first block (of :data:`BLOCK_ROWS` rows) that ``band`` owns among the blocks from
-    the one holding row ``lo`` on (block j belongs to band j mod n_bands)."""
-    first = lo // BLOCK_ROWS
+def first_block_of_band(lo, band, n_bands, block_rows=BLOCK_ROWS):
+    """The first block (of ``block_rows`` rows, :data:`BLOCK_ROWS` unless told) that ``band``
+    owns among the blocks from the one holding row ``lo`` on (block j belongs to band j mod n_bands)."""
+    first = lo // block_rows
     return first + band_offset(band - first, n_bands)
 
 

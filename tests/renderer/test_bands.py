@@ -37,21 +37,23 @@ def test_shading_bands_are_many_but_at_most_one_per_row():
     assert shading_bands(5) == 5 and shading_bands(0) == 1
 
 
+@pytest.mark.parametrize("block_rows", [BLOCK_ROWS, 64])
 @pytest.mark.parametrize("lo, hi, n_bands", [(0, 200, 4), (37, 38, 4), (15, 16, 3), (100, 400, 7), (5, 5, 1)])
-def test_blocks_give_every_row_to_exactly_one_band_and_a_small_triangle_to_one(lo, hi, n_bands):
+def test_blocks_give_every_row_to_exactly_one_band_and_a_small_triangle_to_one(lo, hi, n_bands, block_rows):
     """Rows lo..hi walked as the raster walks them (each band from its first block, every
-    n_bands-th block): each row once, in blocks of 16 rows, block j to band j mod n."""
+    n_bands-th block): each row once, in blocks of 16 rows (64 in the walking kernel's
+    bands), block j to band j mod n."""
     owner = {}
     for band in range(n_bands):
-        block = first_block_of_band(lo, band, n_bands)
-        assert block % n_bands == band and lo // BLOCK_ROWS <= block < lo // BLOCK_ROWS + n_bands
-        while block * BLOCK_ROWS <= hi:
-            for row in range(max(lo, block * BLOCK_ROWS), min(hi, block * BLOCK_ROWS + BLOCK_ROWS - 1) + 1):
+        block = first_block_of_band(lo, band, n_bands, block_rows)
+        assert block % n_bands == band and lo // block_rows <= block < lo // block_rows + n_bands
+        while block * block_rows <= hi:
+            for row in range(max(lo, block * block_rows), min(hi, block * block_rows + block_rows - 1) + 1):
                 assert row not in owner
                 owner[row] = band
             block += n_bands
     assert sorted(owner) == list(range(lo, hi + 1))
-    assert all(owner[r] == (r // BLOCK_ROWS) % n_bands for r in owner)
+    assert all(owner[r] == (r // block_rows) % n_bands for r in owner)
 
 
 def test_loops_over_bands_hand_them_out_one_at_a_time_and_leave_numba_as_it_was():
