@@ -294,21 +294,23 @@ def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index)
     long_edge, low_edge, high_edge, split, lo, hi = split_at_middle(f, lo, hi, top_left)
     long_walk = edge_walk(f, long_edge, lo, 1, top_left)
     if lo < split:
-        long_walk = fill_walked(k, lo, min(hi, split - 1), long_walk, edge_walk(f, low_edge, lo, 1, top_left),
-                                setup, top_left, depth_test, first_index, depth, tri_index)
+        long_walk = fill_walked(lo, min(hi, split - 1), long_walk, edge_walk(f, low_edge, lo, 1, top_left),
+                                setup.plane[k], np.int32(first_index + k), top_left, depth_test, depth, tri_index)
     top = max(lo, split)
     if top <= hi:
-        fill_walked(k, top, hi, long_walk, edge_walk(f, high_edge, top, 1, top_left),
-                    setup, top_left, depth_test, first_index, depth, tri_index)
+        fill_walked(top, hi, long_walk, edge_walk(f, high_edge, top, 1, top_left),
+                    setup.plane[k], np.int32(first_index + k), top_left, depth_test, depth, tri_index)
 
 
 @njit(cache=True, inline="always")
-def fill_walked(k, lo, hi, long_walk, short_walk, setup, top_left, depth_test, first_index, depth, tri_index):
-    """Fill rows ``lo … hi`` of triangle ``k``, each row's span between its two walked edges
-    (:func:`renderer.edge_walk.walked_columns`), then both edges a row on; returns the long
-    edge's walk at row ``hi + 1``. The triangle's depth plane is read once for the stretch."""
-    plane, kk, width = setup.plane, np.int32(first_index + k), depth.shape[1]
-    ax, ay, az, zx, zy = plane[k, 6], plane[k, 7], plane[k, 8], plane[k, 9], plane[k, 10]
+def fill_walked(lo, hi, long_walk, short_walk, plane, kk, top_left, depth_test, depth, tri_index):
+    """Fill rows ``lo … hi`` of the triangle numbered ``kk`` in the visibility buffer, whose
+    set-up row is ``plane`` (11,) (:class:`TriangleSetup`), each row's span between its two
+    walked edges at row ``lo`` (:func:`renderer.edge_walk.walked_columns`), then both edges a
+    row on; returns the long edge's walk at row ``hi + 1``. The depth plane is read once for
+    the stretch."""
+    width = depth.shape[1]
+    ax, ay, az, zx, zy = plane[6], plane[7], plane[8], plane[9], plane[10]
     for row in range(lo, hi + 1):
         first, last = walked_columns(long_walk, short_walk, top_left, width)
         fill_columns(row, first, last, az + zy * (row + 0.5 - ay), zx, ax, kk, depth_test, depth, tri_index)
@@ -364,20 +366,26 @@ def fill_columns(row, first, last, z_row, zx, ax, kk, depth_test, depth, tri_ind
 
 
 @njit(cache=True, inline="always")
-def draw_band(b, setup, n_bands, rule, depth_test, first_index, clear, depth, tri_index, fill_stretch, block_rows):
-    """Band ``b``'s share of :func:`rasterize`: clear its rows (with ``clear``), then draw every
-    triangle on them, in order, a block of ``block_rows`` rows at a time, each block's rows
-    ``top … bottom`` of triangle ``k`` filled by ``fill_stretch(k, top, bottom, …)``:
+def clear_band(b, n_bands, block_rows, depth, tri_index):
+    """Clear band ``b``'s rows (blocks of ``block_rows`` rows, every ``n_bands``-th from block
+    ``b``) of the visibility buffer: depth :data:`DEPTH_CLEAR`, triangle :data:`EMPTY`. A band
+    clears the rows it draws, so no band waits for another."""
+    height, width = depth.shape
+    for block in range(b, (height + block_rows - 1) // block_rows, n_bands):
+        for row in range(block * block_rows, min(block * block_rows + block_rows, height)):
+            for col in range(width):
+                depth[row, col] = DEPTH_CLEAR
+                tri_index[row, col] = EMPTY
+
+
+@njit(cache=True, inline="always")
+def draw_band(b, setup, n_bands, block_rows, rule, depth_test, first_index, depth, tri_index, fill_stretch):
+    """Band ``b``'s share of :func:`rasterize`: every triangle drawn on its rows, in order, a
+    block of ``block_rows`` rows at a time (block j belongs to band j mod ``n_bands``), each
+    block's rows ``top … bottom`` of triangle ``k`` filled by ``fill_stretch(k, top, bottom, …)``:
     :func:`fill_rows_dividing` (one division per edge and row) or :func:`fill_rows` (the
     edges walked). Each kernel passes its own, inlined there, so the dividing kernel never
     compiles the walk."""
-    height, width = depth.shape
-    if clear:
-        for block in range(b, (height + block_rows - 1) // block_rows, n_bands):
-            for row in range(block * block_rows, min(block * block_rows + block_rows, height)):
-                for col in range(width):
-                    depth[row, col] = DEPTH_CLEAR
-                    tri_index[row, col] = EMPTY
     for k in range(setup.ccw.shape[0]):
         lo, hi = setup.rows[k, 0], setup.rows[k, 1]
         block = first_block_of_band(lo, b, n_bands, block_rows)
@@ -400,8 +408,8 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, clear, depth, tri_i
     algorithm, or no hidden-surface removal at all): then the last triangle drawn wins.
     ``first_index`` is the number of the setup's first triangle in ``tri_index`` (the
     triangles arrive in batches, :func:`rasterize_visibility`). Each band's work is
-    :func:`draw_band`; :func:`rasterize_walking` is the same loop finding the spans by
-    walking the edges.
+    :func:`clear_band` and :func:`draw_band`; :func:`rasterize_walking` is the same loop finding
+    the spans by walking the edges.
     depth (H, W) int32, the 24-bit depth (:data:`DEPTH_CLEAR` where empty), tri_index (H, W)
     int32 (:data:`EMPTY` where none): outputs, in window rows (y up). The weights are not
     stored: shading works them out (:func:`screen_weights`) for the one visible fragment
@@ -409,8 +417,9 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, clear, depth, tri_i
     NamedTuple's fields inside ``prange`` (numba issues #5872, #7135); ``setup`` is only read.
     """
     for b in prange(n_bands):
-        draw_band(b, setup, n_bands, rule, depth_test, first_index, clear, depth, tri_index, fill_rows_dividing,
-                  BLOCK_ROWS)
+        if clear:
+            clear_band(b, n_bands, BLOCK_ROWS, depth, tri_index)
+        draw_band(b, setup, n_bands, BLOCK_ROWS, rule, depth_test, first_index, depth, tri_index, fill_rows_dividing)
 
 
 @njit(cache=True, parallel=True)
@@ -418,7 +427,9 @@ def rasterize_walking(setup, n_bands, rule, depth_test, first_index, clear, dept
     """:func:`rasterize`, each span found by walking the triangle's edges (:func:`fill_rows`):
     the same pixels, quicker for tall triangles (:func:`is_tall`)."""
     for b in prange(n_bands):
-        draw_band(b, setup, n_bands, rule, depth_test, first_index, clear, depth, tri_index, fill_rows, WALK_BLOCK_ROWS)
+        if clear:
+            clear_band(b, n_bands, WALK_BLOCK_ROWS, depth, tri_index)
+        draw_band(b, setup, n_bands, WALK_BLOCK_ROWS, rule, depth_test, first_index, depth, tri_index, fill_rows)
 
 
 @njit(cache=True, parallel=True)
