@@ -308,7 +308,7 @@ def fill_walked(lo, hi, long_walk, short_walk, plane, kk, top_left, depth_test, 
     set-up row is ``plane`` (11,) (:class:`TriangleSetup`), each row's span between its two
     walked edges at row ``lo`` (:func:`renderer.edge_walk.walked_columns`), then both edges a
     row on; returns the long edge's walk at row ``hi + 1``. The depth plane is read once for
-    the stretch."""
+    the stretch; each row's constant part is :func:`row_depth`'s expression on those values."""
     width = depth.shape[1]
     ax, ay, az, zx, zy = plane[6], plane[7], plane[8], plane[9], plane[10]
     for row in range(lo, hi + 1):

@@ -419,9 +419,10 @@ def shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start = col
-    while k != EMPTY:  # whole lanes: the points past a span's end are the next span's, written over next
-        span_points(span_setup(k, row, col, frags, geo, face), face, whole_lanes(end - col), points, col)
-        span_tcoords(k, row, col, whole_lanes(end - col), frags, geo, st)
+    while k != EMPTY:  # whole lanes: the values past a span's end are the next span's, written over next
+        count = whole_lanes(end - col)
+        span_points(span_setup(k, row, col, frags, geo, face), face, count, points, col)
+        span_tcoords(k, row, col, count, frags, geo, st)
         col = end
         k, end = next_span_of(o, row, col, frags, geo)
     light_points(o, materials, lights, points, start, col - start, colour)

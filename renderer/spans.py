@@ -180,10 +180,10 @@ LANES = 8
 
 @njit(cache=True, inline="always")
 def whole_lanes(count):
-    """``count`` rounded up to a multiple of :data:`LANES` when it fills a vector register at
-    least once: a loop over that many pixels then runs in vector steps alone, with no scalar
+    """``count`` rounded up to a multiple of :data:`LANES` when it fills half a vector register
+    or more: a loop over that many pixels then runs in vector steps alone, with no scalar
     tail. A shorter count is kept (a thin triangle's span of a pixel or two is not worth a
-    vector register's eight)."""
+    vector register's eight: padding those made the 1,024-segment cylinder slower)."""
     return (count + LANES - 1) & -LANES if count >= LANES // 2 else count
 
 
