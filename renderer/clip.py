@@ -35,7 +35,7 @@ N_PLANES = 6
 MAX_POLY = 3 + N_PLANES  # each plane adds at most one vertex to a convex polygon
 
 
-@njit(cache=True)
+@njit(cache=True, from_python=False)
 def plane_distance(v, plane):
     """Signed distance-like value of clip-space vertex ``v`` to a plane; ≥ 0 is inside.
 
@@ -73,7 +73,7 @@ def outcodes(verts_clip, codes):
         codes[i] = outcode(verts_clip, i)
 
 
-@njit(cache=True)
+@njit(cache=True, from_python=False)
 def clip_polygon(poly, bary, n, plane, out_poly, out_bary):
     """One Sutherland–Hodgman pass: clip the n-gon ``poly`` against ``plane``.
 
@@ -101,7 +101,7 @@ def clip_polygon(poly, bary, n, plane, out_poly, out_bary):
     return m
 
 
-@njit(cache=True)
+@njit(cache=True, from_python=False)
 def clip_one(verts_clip, triangles, t, poly, bary, tmp_poly, tmp_bary):
     """Sutherland–Hodgman on triangle ``t`` against all six planes: the vertex count of the
     clipped polygon (< 3: nothing left), its vertices in ``poly`` and weights in ``bary``."""

@@ -88,7 +88,7 @@ def light_batch(o, materials, lights, points, count, colour):
     light_points(o, materials, lights, points, 0, count, colour)
 
 
-@njit(cache=True)
+@njit(cache=True, from_python=False)
 def pixel_by_pixel(k, row, c0, count, frags, geo, inputs, colour):
     """The fallback of :func:`span_linear_colours`: each pixel's
     :func:`renderer.shading.fragment_colour` (float64), as float32. Compiled on its own, not

@@ -270,7 +270,7 @@ def span_tcoords(k, row, c0, count, frags, geo, st):
                   frags.perspective, c0, count, st)
 
 
-@njit(cache=True)
+@njit(cache=True, from_python=False)
 def tcoords_along(edges, w, cb, tcoords, perspective, c0, count, st):
     """The loop of :func:`span_tcoords`: pixel columns c0 … c0 + count − 1 of one row.
 

@@ -219,7 +219,7 @@ def modulate_texels(textures, o, st, first, count, colour):
                 textures.wrap[o], st, first, count, colour)
 
 
-@njit(cache=True)
+@njit(cache=True, from_python=False)
 def filter_span(texels, offset, width, height, filter_mode, wrap, st, first, count, colour):
     """The values :func:`sample` gives at ``st``, as float32, multiplied into ``colour``. Filter
     and wrap are the object's, chosen once for the whole span: one straight loop per filter,

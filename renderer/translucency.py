@@ -301,7 +301,7 @@ def batch_scratch(width):
     return np.empty((6, n), np.float32), np.empty((3, n), np.float32), np.empty((n, 3), np.int64)
 
 
-@njit(cache=True)
+@njit(cache=True, from_python=False)
 def add_run_to_oit(colour, first, a, count, seen, sum_r, sum_g, sum_b, weight, transmit):
     """A run's ``count`` fragments (linear colours: columns ``first`` … of ``colour`` (3, N)
     float32, alpha ``a``) added to the ``oit`` buffers of its pixels (:func:`oit_add`; empty

@@ -148,7 +148,7 @@ def vtk_point_colours(o, materials, lights, points, first, count, colour):
                      amb[2] + dif[2]), lights.direction, lights.intensity_rgb, points, np.int64(first), np.int64(count), colour)
 
 
-@njit(cache=True, refcounts=False)
+@njit(cache=True, refcounts=False, from_python=False)
 def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, points, first, count, colour):
     """The loops of :func:`vtk_point_colours`: ``material`` (Amb, Dif, Spe as float32 RGB, then the
     specular power), ``unlit`` Amb + Dif in float64, the lights' directions and colours."""
