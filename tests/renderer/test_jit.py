@@ -241,9 +241,11 @@ def test_a_kernel_numba_cannot_cache_gets_numbas_warning_not_a_crash():
 
 def test_a_kernel_compiled_without_refcounts_counts_no_references():
     """``njit(refcounts=False)``: the compiled code calls no ``NRT_incref``/``NRT_decref``, where
-    the same function with them does; the lighting kernel, called once per span, is built so."""
+    the same function with them does; the lighting kernel, called once per span, and the
+    raster's band kernels, which take views of the set-up rows per triangle, are built so."""
     import numpy as np
 
+    from renderer.raster import band_dividing, band_walking
     from renderer.reflection.vtk_spans import vtk_light_kernel
 
     def total(a, b):
@@ -256,7 +258,8 @@ def test_a_kernel_compiled_without_refcounts_counts_no_references():
     assert "NRT_incref" in counted.inspect_llvm(counted.signatures[0])
     assert "NRT_incref" not in uncounted.inspect_llvm(uncounted.signatures[0])
     assert "NRT_decref" not in uncounted.inspect_llvm(uncounted.signatures[0])
-    assert vtk_light_kernel.targetoptions.get("_nrt") is False
+    for kernel in (vtk_light_kernel, band_dividing, band_walking):
+        assert kernel.targetoptions.get("_nrt") is False, kernel
 
 
 def test_kernels_are_compiled_without_the_wrappers_they_do_not_need():
