@@ -28,6 +28,7 @@ from typing import NamedTuple
 
 import numpy as np
 from renderer.jit import njit, prange
+from renderer.min_max import larger
 
 from renderer.workspace import empty
 
@@ -208,7 +209,7 @@ def count_pieces(verts_clip, triangles, straddling, counts, cut):
         t = straddling[i]
         poly, bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
         n = clip_one(verts_clip, triangles, t, poly, bary, np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3)))
-        counts[t], cut[t] = max(n - 2, 0), n >= 3
+        counts[t], cut[t] = larger(n - 2, 0), n >= 3
 
 
 @njit(cache=True)

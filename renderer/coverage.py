@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 from renderer.jit import njit
+from renderer.min_max import larger, smaller
 
 from renderer.raster import FILL_RULES, ceil_div, scanline_span, signed_area_fixed
 from renderer.window import SUBPIXEL
@@ -38,11 +39,11 @@ def coverage_into(fixed, width, height, rule, mask):
         return
     if area < 0:  # counter-clockwise for the span test, as setup_triangles does
         f[1, 0], f[1, 1], f[2, 0], f[2, 1] = fixed[2, 0], fixed[2, 1], fixed[1, 0], fixed[1, 1]
-    first_row = max(0, ceil_div(min(f[0, 1], f[1, 1], f[2, 1]), SUBPIXEL))
-    last_row = min(height - 1, max(f[0, 1], f[1, 1], f[2, 1]) // SUBPIXEL)
+    first_row = larger(0, ceil_div(smaller(smaller(f[0, 1], f[1, 1]), f[2, 1]), SUBPIXEL))
+    last_row = smaller(height - 1, larger(larger(f[0, 1], f[1, 1]), f[2, 1]) // SUBPIXEL)
     for row in range(first_row, last_row + 1):
         first, last = scanline_span(f, row, rule)
-        for col in range(max(first, 0), min(last, width - 1) + 1):
+        for col in range(larger(first, 0), smaller(last, width - 1) + 1):
             mask[row, col] = True
 
 

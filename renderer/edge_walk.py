@@ -12,6 +12,7 @@ pixel centre (i, j) at (256·i, 256·j)); a triangle's corners counter-clockwise
 from __future__ import annotations
 
 from renderer.jit import njit
+from renderer.min_max import larger, smaller
 from renderer.window import SUBPIXEL
 
 LEFT, RIGHT = 0, 1
@@ -102,11 +103,11 @@ def split_at_middle(f, lo, hi, top_left):
     if y_mid == y_high:  # flat top: the low edge bounds every row
         split = hi + 1
         if top_left and y_high % SUBPIXEL == 0:  # a top edge does not own the row on it
-            hi = min(hi, y_high // SUBPIXEL - 1)
+            hi = smaller(hi, y_high // SUBPIXEL - 1)
     else:
         split = -((-y_mid) // SUBPIXEL)  # the first row at or above the middle corner
     if y_mid == y_low and not top_left and y_low % SUBPIXEL == 0:  # bottom-right: a bottom edge does not own its row
-        lo = max(lo, y_low // SUBPIXEL + 1)
+        lo = larger(lo, y_low // SUBPIXEL + 1)
     return long_edge, low_edge, high_edge, split, lo, hi
 
 
@@ -116,5 +117,5 @@ def walked_columns(long_walk, short_walk, top_left, width):
     edges (:func:`split_at_middle`), clamped to the image (first > last: none)."""
     long_bound, short_bound = column_bound(long_walk, top_left), column_bound(short_walk, top_left)
     if long_walk[0] == LEFT:
-        return max(long_bound, 0), min(short_bound - 1, width - 1)
-    return max(short_bound, 0), min(long_bound - 1, width - 1)
+        return larger(long_bound, 0), smaller(short_bound - 1, width - 1)
+    return larger(short_bound, 0), smaller(long_bound - 1, width - 1)

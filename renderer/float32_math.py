@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from renderer.jit import njit
+from renderer.min_max import clamp
 
 F0, F1, F2 = np.float32(0.0), np.float32(1.0), np.float32(2.0)
 HALF = np.float32(0.5)
@@ -65,7 +66,7 @@ def exp2_f32(y):
     integer part goes into the exponent bits, the fraction through a polynomial (exact at
     integers). No subnormal result, and no branch: a loop of them vectorises."""
     flushed = np.float32(y) < EXP_FLUSH
-    y = min(max(np.float32(y), EXP_MIN), EXP_MAX)
+    y = clamp(np.float32(y), EXP_MIN, EXP_MAX)
     i = np.floor(y)
     t = (y - i) * LN2
     p = F1 + t * (F1 + t * (E2 + t * (E3 + t * (E4 + t * (E5 + t * (E6 + t * (E7 + t * (E8 + t * E9))))))))
@@ -82,5 +83,5 @@ def pow_f32(x, p):
 @njit(cache=True, inline="always")
 def unorm8(c):
     """Linear 0..1 → the framebuffer's 8 bits: ``round_half_even(clamp(c, 0, 1)·255)`` in float32."""
-    f = np.float32(min(max(c, 0.0), 1.0)) * np.float32(255.0)
+    f = np.float32(clamp(c, 0.0, 1.0)) * np.float32(255.0)
     return np.uint8(np.rint(f))

@@ -36,6 +36,7 @@ from typing import Callable, NamedTuple
 
 import numpy as np
 from renderer.jit import njit, prange
+from renderer.min_max import clamp, larger, smaller
 
 from renderer.bands import BLOCK_ROWS, first_block_of_band, one_band_at_a_time, raster_bands
 from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
@@ -104,10 +105,10 @@ def scanline_span(f, row, rule=TOP_LEFT):
         dx, dy = xb - xa, yb - ya
         if dy < 0:  # left edge: E ≥ 0  ⇔  X ≥ (|dy|·xa − dx·(Y − ya)) / |dy|
             num, den = -dy * xa - dx * (y - ya), -dy * SUBPIXEL
-            first = max(first, ceil_div(num, den) if rule == TOP_LEFT else num // den + 1)
+            first = larger(first, ceil_div(num, den) if rule == TOP_LEFT else num // den + 1)
         elif dy > 0:  # right edge: E > 0  ⇔  X < (dy·xa + dx·(Y − ya)) / dy
             num, den = dy * xa + dx * (y - ya), dy * SUBPIXEL
-            last = min(last, ceil_div(num, den) - 1 if rule == TOP_LEFT else num // den)
+            last = smaller(last, ceil_div(num, den) - 1 if rule == TOP_LEFT else num // den)
         else:  # horizontal: bottom edge (dx > 0) owns its centres, top edge does not
             e_val = dx * (y - ya)
             owned = dx > 0 if rule == TOP_LEFT else dx < 0
@@ -187,10 +188,10 @@ def setup_triangles(corners, fixed, window, height, cull_back, front, ccw, rows,
         for c in range(2):
             ccw[k, 0, c], ccw[k, 1, c], ccw[k, 2, c] = fixed[i0, c], fixed[i1, c], fixed[i2, c]
         a2 = triangle_plane(window, corners[k, 0], corners[k, 1], corners[k, 2], plane[k])
-        y_min = min(fixed[i0, 1], fixed[i1, 1], fixed[i2, 1])
-        y_max = max(fixed[i0, 1], fixed[i1, 1], fixed[i2, 1])
-        rows[k, 0] = max(0, ceil_div(y_min, SUBPIXEL))
-        rows[k, 1] = min(height - 1, y_max // SUBPIXEL)
+        y_min = smaller(smaller(fixed[i0, 1], fixed[i1, 1]), fixed[i2, 1])
+        y_max = larger(larger(fixed[i0, 1], fixed[i1, 1]), fixed[i2, 1])
+        rows[k, 0] = larger(0, ceil_div(y_min, SUBPIXEL))
+        rows[k, 1] = smaller(height - 1, y_max // SUBPIXEL)
         if area == 0 or a2 == 0.0 or (cull_back and area < 0):  # nothing to draw, or a culled back face
             rows[k, 0], rows[k, 1] = 1, 0
 
@@ -211,7 +212,7 @@ def weight_planes(corners, fixed, window, front, plane):
 def row_span(k, row, ccw, width, rule):
     """Columns [first, last] of triangle ``k`` on ``row``, clamped to the image (first > last: none)."""
     first, last = scanline_span(ccw[k], row, rule)
-    return max(first, 0), min(last, width - 1)
+    return larger(first, 0), smaller(last, width - 1)
 
 
 @njit(cache=True, inline="always")
@@ -236,7 +237,7 @@ def row_depth(k, row, plane):
 def depth_bits(z):
     """Window depth ``z`` clamped to 0..1 and rounded to the 24-bit depth buffer: an integer
     0 … 2²⁴ − 1 (the window depth times :data:`DEPTH_MAX`)."""
-    return np.int32(np.floor(min(max(z, 0.0), 1.0) * DEPTH_MAX + 0.5))
+    return np.int32(np.floor(clamp(z, 0.0, 1.0) * DEPTH_MAX + 0.5))
 
 
 @njit(cache=True, inline="always")
@@ -294,9 +295,9 @@ def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index)
     long_edge, low_edge, high_edge, split, lo, hi = split_at_middle(f, lo, hi, top_left)
     long_walk = edge_walk(f, long_edge, lo, 1, top_left)
     if lo < split:
-        long_walk = fill_walked(lo, min(hi, split - 1), long_walk, edge_walk(f, low_edge, lo, 1, top_left),
+        long_walk = fill_walked(lo, smaller(hi, split - 1), long_walk, edge_walk(f, low_edge, lo, 1, top_left),
                                 setup.plane[k], np.int32(first_index + k), top_left, depth_test, depth, tri_index)
-    top = max(lo, split)
+    top = larger(lo, split)
     if top <= hi:
         fill_walked(top, hi, long_walk, edge_walk(f, high_edge, top, 1, top_left),
                     setup.plane[k], np.int32(first_index + k), top_left, depth_test, depth, tri_index)
@@ -372,7 +373,7 @@ def clear_band(b, n_bands, block_rows, depth, tri_index):
     clears the rows it draws, so no band waits for another."""
     height, width = depth.shape
     for block in range(b, (height + block_rows - 1) // block_rows, n_bands):
-        for row in range(block * block_rows, min(block * block_rows + block_rows, height)):
+        for row in range(block * block_rows, smaller(block * block_rows + block_rows, height)):
             for col in range(width):
                 depth[row, col] = DEPTH_CLEAR
                 tri_index[row, col] = EMPTY
@@ -390,7 +391,7 @@ def draw_band(b, setup, n_bands, block_rows, rule, depth_test, first_index, dept
         lo, hi = setup.rows[k, 0], setup.rows[k, 1]
         block = first_block_of_band(lo, b, n_bands, block_rows)
         while block * block_rows <= hi:  # none when lo > hi (nothing to draw)
-            top, bottom = max(lo, block * block_rows), min(hi, block * block_rows + block_rows - 1)
+            top, bottom = larger(lo, block * block_rows), smaller(hi, block * block_rows + block_rows - 1)
             fill_stretch(k, top, bottom, setup, rule, depth_test, first_index, depth, tri_index)
             block += n_bands
 

@@ -30,6 +30,7 @@ from typing import NamedTuple
 
 import numpy as np
 from renderer.jit import njit, prange
+from renderer.min_max import larger
 
 from renderer.bands import one_band_at_a_time, shading_bands
 from renderer.float32_math import unorm8
@@ -350,8 +351,9 @@ def span_scratch(width):
     ``packed`` (W,) uint32, a run's 8-bit colours on their way out
     (:func:`renderer.reflection.registry.store_run`). The points and coordinates have room
     for a span's whole vector lanes (:func:`renderer.spans.whole_lanes`) past the row's last column."""
-    return (np.empty((6, max(width, 1) + LANES - 1), np.float32), np.empty((3, max(width, 1)), np.float32),
-            np.empty((2, max(width, 1) + LANES - 1)), np.empty(max(width, 1), np.uint32))
+    w = larger(width, 1)
+    return (np.empty((6, w + LANES - 1), np.float32), np.empty((3, w), np.float32),
+            np.empty((2, w + LANES - 1)), np.empty(w, np.uint32))
 
 
 @njit(cache=True, inline="always")

@@ -30,6 +30,7 @@ from typing import NamedTuple
 
 import numpy as np
 from renderer.jit import njit
+from renderer.min_max import clamp
 
 NEAREST, LINEAR = 0, 1
 REPEAT, CLAMP = 0, 1
@@ -111,7 +112,7 @@ def wrap_index(i, size, wrap):
     """An integer texel index wrapped (repeat) or clamped (clamp) into 0..size − 1."""
     if wrap == REPEAT:
         return i % size
-    return min(max(i, 0), size - 1)
+    return clamp(i, 0, size - 1)
 
 
 UNIT32 = (np.arange(256) / 255.0).astype(np.float32)

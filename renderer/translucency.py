@@ -40,6 +40,7 @@ from typing import NamedTuple
 
 import numpy as np
 from renderer.jit import njit, prange
+from renderer.min_max import larger, smaller
 
 from renderer.bands import first_row_of_band, one_band_at_a_time, raster_bands, shading_bands
 from renderer.fragment_spans import batch_points, light_batch, lit_in_batches, span_linear_colours
@@ -141,7 +142,7 @@ def mul8(a, b):
 @njit(cache=True, inline="always")
 def blend8(src, src_factor, dst, dst_factor):
     """One channel of 8-bit blending: ``src·src_factor + dst·dst_factor`` (all unorm8), saturated."""
-    return min(mul8(src, src_factor) + mul8(dst, dst_factor), 255)
+    return smaller(mul8(src, src_factor) + mul8(dst, dst_factor), 255)
 
 
 @njit(cache=True, inline="always")
@@ -160,7 +161,7 @@ def oit_resolve(sum_r, sum_g, sum_b, weight, transmit, behind, out):
     ``out``: ``C = Σαc / max(Σα, 0.01)`` with coverage ``A = 1 − T``, ``C`` converted to 8 bits
     and blended ``C·A + behind·(1 − A)`` in 8-bit arithmetic."""
     a8 = unorm8(F32_ONE - transmit)
-    w = max(weight, np.float32(0.01))
+    w = larger(weight, np.float32(0.01))
     out[0] = blend8(unorm8(sum_r / w), a8, behind[0], 255 - a8)
     out[1] = blend8(unorm8(sum_g / w), a8, behind[1], 255 - a8)
     out[2] = blend8(unorm8(sum_b / w), a8, behind[2], 255 - a8)
@@ -211,8 +212,8 @@ def front_to_back(colours, alpha, order, m, behind, opaque_behind, front, back, 
             a8 = unorm8(a)
             if a8 > 0:
                 for c in range(3):
-                    back[c] = min(unorm8(np.float32(colours[b, c]) * a) + mul8(back[c], 255 - a8), 255)
-                back[3] = min(a8 + mul8(back[3], 255 - a8), 255)
+                    back[c] = smaller(unorm8(np.float32(colours[b, c]) * a) + mul8(back[c], 255 - a8), 255)
+                back[3] = smaller(a8 + mul8(back[3], 255 - a8), 255)
             far -= 1
         near += 1
         first = False
@@ -220,7 +221,7 @@ def front_to_back(colours, alpha, order, m, behind, opaque_behind, front, back, 
     a8 = unorm8(F32_ONE - t * (F32_ONE - np.float32(back[3] / 255.0)))
     for c in range(3):
         s8 = unorm8(np.float32(front[c] / 255.0) + np.float32(back[c] / 255.0) * t)
-        out[c] = min(s8 + mul8(behind[c], 255 - a8), 255)
+        out[c] = smaller(s8 + mul8(behind[c], 255 - a8), 255)
 
 
 @njit(cache=True, inline="always")
@@ -297,7 +298,7 @@ def batch_scratch(width):
     fragment a pixel): their points (6, N) and linear colours (3, N) float32
     (:func:`renderer.fragment_spans.batch_points`), and each run's (row, first column,
     pixels) (N, 3) int64, N = :data:`STRIP_ROWS` · width."""
-    n = STRIP_ROWS * max(width, 1)
+    n = STRIP_ROWS * larger(width, 1)
     return np.empty((6, n), np.float32), np.empty((3, n), np.float32), np.empty((n, 3), np.int64)
 
 
@@ -353,7 +354,7 @@ def nearest_in_row(opaque_depth, row):
     :data:`~renderer.raster.DEPTH_CLEAR` on a row with no opaque surface."""
     nearest = DEPTH_CLEAR
     for col in range(opaque_depth.shape[1]):
-        nearest = min(nearest, opaque_depth[row, col])
+        nearest = smaller(nearest, opaque_depth[row, col])
     return nearest
 
 
@@ -368,7 +369,7 @@ def span_in_front(k, z_row, first, last, plane, nearest):
     of everything opaque, or with nothing opaque on the row: every span)."""
     if first > last:
         return True
-    far = max(pixel_depth(k, z_row, first, plane), pixel_depth(k, z_row, last, plane))
+    far = larger(pixel_depth(k, z_row, first, plane), pixel_depth(k, z_row, last, plane))
     return far <= nearest
 
 
@@ -431,7 +432,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
         out = np.empty(3, np.int64)
         nearest = np.empty(STRIP_ROWS, np.int32)  # the nearest opaque depth of each of the strip's rows
         for strip in range(b, n_strips, n_bands):
-            lo, hi = strip * STRIP_ROWS, min(strip * STRIP_ROWS + STRIP_ROWS, height) - 1
+            lo, hi = strip * STRIP_ROWS, smaller(strip * STRIP_ROWS + STRIP_ROWS, height) - 1
             for row in range(lo, hi + 1):
                 for col in range(width):
                     seen[row, col] = 0
@@ -442,7 +443,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                 batched = spans and lit_in_batches(o, materials, textures, lights)
                 face = materials.shading_path[o] == PIXEL_FACE_NORMAL
                 n_runs = n_points = 0
-                for row in range(max(setup.rows[k, 0], lo), min(setup.rows[k, 1], hi) + 1):
+                for row in range(larger(setup.rows[k, 0], lo), smaller(setup.rows[k, 1], hi) + 1):
                     first, last = row_span(k, row, setup.ccw, width, rule)
                     z_row = row_depth(k, row, setup.plane)
                     whole = spans and (not depth_test or span_in_front(k, z_row, first, last, setup.plane,

@@ -19,6 +19,7 @@ import math
 import numpy as np
 
 from renderer.jit import njit
+from renderer.min_max import clamp, larger
 from renderer.lights import light_at
 from renderer.reflection.materials import MaterialRow, ReflectionModel, textbook_path
 
@@ -45,11 +46,11 @@ def classic_lighting(n, p, o, materials, lights):
         if att == 0.0 or ndl <= 0.0:
             continue
         rx, ry, rz = 2.0 * ndl * n[0] - lx, 2.0 * ndl * n[1] - ly, 2.0 * ndl * n[2] - lz
-        sf = max(rx * vx + ry * vy + rz * vz, 0.0) ** power
+        sf = larger(rx * vx + ry * vy + rz * vz, 0.0) ** power
         r += att * li[i, 0] * (dif[0] * ndl + spe[0] * sf)
         g += att * li[i, 1] * (dif[1] * ndl + spe[1] * sf)
         b += att * li[i, 2] * (dif[2] * ndl + spe[2] * sf)
-    return min(max(r, 0.0), 1.0), min(max(g, 0.0), 1.0), min(max(b, 0.0), 1.0), 0.0, 0.0, 0.0
+    return clamp(r, 0.0, 1.0), clamp(g, 0.0, 1.0), clamp(b, 0.0, 1.0), 0.0, 0.0, 0.0
 
 
 MODEL = ReflectionModel(name="classic", material_row=material_row, shading_path=textbook_path,

@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 
 from renderer.jit import njit
+from renderer.min_max import clamp, larger
 from renderer.lights import light_at
 from renderer.reflection.materials import MaterialRow, ReflectionModel, textbook_path
 
@@ -32,7 +33,7 @@ def material_row(material) -> MaterialRow:
 
 @njit(cache=True, inline="always")
 def clamp01(x):
-    return min(max(x, 0.0), 1.0)
+    return clamp(x, 0.0, 1.0)
 
 
 @njit(cache=True, inline="always")
@@ -60,8 +61,8 @@ def opengl_lighting(n, p, o, materials, lights):
             hx, hy, hz = lx + vx, ly + vy, lz + vz
             hl = math.sqrt(hx * hx + hy * hy + hz * hz)
             ndh = (n[0] * hx + n[1] * hy + n[2] * hz) / hl if hl > 0.0 else 0.0
-            sf = max(ndh, 0.0) ** shininess
-        df = max(ndl, 0.0)
+            sf = larger(ndh, 0.0) ** shininess
+        df = larger(ndl, 0.0)
         r += att * (la[i, 0] * amb[0] + df * ld[i, 0] * dif[0])
         g += att * (la[i, 1] * amb[1] + df * ld[i, 1] * dif[1])
         b += att * (la[i, 2] * amb[2] + df * ld[i, 2] * dif[2])

@@ -27,6 +27,7 @@ import math
 import numpy as np
 
 from renderer.jit import njit
+from renderer.min_max import larger
 from renderer.lights import HEADLIGHT_ONLY, UNLIT, light_at
 from renderer.reflection.materials import (PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, MaterialRow, ReflectionModel,
                                            smooth)
@@ -76,7 +77,7 @@ def vtk_lighting(n, p, o, materials, lights):
         return amb[0] + dif[0], amb[1] + dif[1], amb[2] + dif[2], 0.0, 0.0, 0.0
     shiny = spe[0] != 0.0 or spe[1] != 0.0 or spe[2] != 0.0  # else Ks·Cs·sf is 0 whatever sf: skip the power
     if complexity == HEADLIGHT_ONLY:
-        df = max(1e-6, n[2])
+        df = larger(1e-6, n[2])
         sf = df ** power if shiny else 0.0
         return (amb[0] + df * dif[0] * l_col[0, 0] + sf * spe[0] * l_col[0, 0],
                 amb[1] + df * dif[1] * l_col[0, 1] + sf * spe[1] * l_col[0, 1],
@@ -88,9 +89,9 @@ def vtk_lighting(n, p, o, materials, lights):
     for i in range(l_col.shape[0]):
         to_x, to_y, to_z, att = light_at(lights, i, p)
         lx, ly, lz = -to_x, -to_y, -to_z  # VTK's l: the direction the light travels
-        df = max(0.0, -att * (n[0] * lx + n[1] * ly + n[2] * lz))
+        df = larger(0.0, -att * (n[0] * lx + n[1] * ly + n[2] * lz))
         if df > 0.0:
-            sf = att * max(1e-5, reflect_dot(lx, ly, lz, n, vx, vy, vz)) ** power if shiny else 0.0
+            sf = att * larger(1e-5, reflect_dot(lx, ly, lz, n, vx, vy, vz)) ** power if shiny else 0.0
             d0 += df * l_col[i, 0]
             d1 += df * l_col[i, 1]
             d2 += df * l_col[i, 2]

@@ -18,6 +18,7 @@ import numpy as np
 
 from renderer.float32_math import pow_f32
 from renderer.jit import njit
+from renderer.min_max import clamp, larger
 from renderer.lights import DIRECTIONAL, HEADLIGHT_ONLY, UNLIT
 from renderer.spans import span_points
 
@@ -67,7 +68,7 @@ def to8(v):
     """Linear 0..1 float32 → the framebuffer's 8 bits: round_half_even(clamp(v)·255), the
     rounding done by adding and subtracting 2²³ (float32 addition rounds to nearest, ties
     to even, and at 2²³ its step is 1): the same integer as ``np.rint``, without a call."""
-    return np.uint8(np.int32((min(max(v, F0), F1) * F255 + ROUNDER) - ROUNDER))
+    return np.uint8(np.int32((clamp(v, F0, F1) * F255 + ROUNDER) - ROUNDER))
 
 
 @njit(cache=True, inline="always")
@@ -161,7 +162,7 @@ def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, point
     if complexity == HEADLIGHT_ONLY:
         c0, c1, c2 = np.float32(l_col[0, 0]), np.float32(l_col[0, 1]), np.float32(l_col[0, 2])
         for i in range(count):
-            df = max(HEADLIGHT_FLOOR, points[5, np.uint64(first + i)])
+            df = larger(HEADLIGHT_FLOOR, points[5, np.uint64(first + i)])
             sf = pow_f32(df, power) if shiny else F0
             colour[0, i] = a0 + df * d0 * c0 + sf * s0 * c0
             colour[1, i] = a1 + df * d1 * c1 + sf * s1 * c1
@@ -175,8 +176,8 @@ def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, point
             j = np.uint64(first + i)  # unsigned: no wrap-around, the loop vectorises
             vx, vy, vz = _view_vector(points[0, j], points[1, j], points[2, j])
             ndl, rdv = _reflect_dot(lx, ly, lz, points[3, j], points[4, j], points[5, j], vx, vy, vz)
-            df = max(F0, -ndl)
-            sf = pow_f32(max(SPECULAR_FLOOR, rdv), power) if shiny else F0
+            df = larger(F0, -ndl)
+            sf = pow_f32(larger(SPECULAR_FLOOR, rdv), power) if shiny else F0
             sf = sf if df > F0 else F0
             colour[0, i] = a0 + d0 * (df * c0) + s0 * (sf * c0)
             colour[1, i] = a1 + d1 * (df * c1) + s1 * (sf * c1)
@@ -192,8 +193,8 @@ def vtk_light_kernel(complexity, shiny, material, unlit, direction, l_col, point
                           np.float32(direction[li, 2]))
             c0, c1, c2 = np.float32(l_col[li, 0]), np.float32(l_col[li, 1]), np.float32(l_col[li, 2])
             ndl, rdv = _reflect_dot(lx, ly, lz, nx, ny, nz, vx, vy, vz)
-            df = max(F0, -ndl)
-            sf = pow_f32(max(SPECULAR_FLOOR, rdv), power) if shiny else F0
+            df = larger(F0, -ndl)
+            sf = pow_f32(larger(SPECULAR_FLOOR, rdv), power) if shiny else F0
             sf = sf if df > F0 else F0
             sd0, sd1, sd2 = sd0 + df * c0, sd1 + df * c1, sd2 + df * c2
             ss0, ss1, ss2 = ss0 + sf * c0, ss1 + sf * c1, ss2 + sf * c2
