@@ -302,21 +302,25 @@ def batch_scratch(width):
     return np.empty((6, n), np.float32), np.empty((3, n), np.float32), np.empty((n, 3), np.int64)
 
 
-@njit(cache=True, from_python=False)
-def add_run_to_oit(colour, first, a, count, seen, sum_r, sum_g, sum_b, weight, transmit):
+@njit(cache=True, from_python=False, refcounts=False)
+def add_run_to_oit(colour, first, a, row, c0, count, seen, sums):
     """A run's ``count`` fragments (linear colours: columns ``first`` … of ``colour`` (3, N)
-    float32, alpha ``a``) added to the ``oit`` buffers of its pixels (:func:`oit_add`; empty
-    buffers where ``seen`` is still 0), and counted in ``seen``. ``seen`` and the five
-    buffers are one row's stretch of a plane, one value per pixel of the run: compiled on
-    its own, with plain 1-D arrays, this loop vectorises (measured: 1 ns a fragment instead of 6)."""
+    float32, alpha ``a``; pixels ``c0`` … of ``row``) added to the pixels' ``oit`` buffers
+    ``sums`` (5, H, W) (:func:`oit_add`; empty buffers where ``seen`` (H, W) is still 0), and
+    counted in ``seen``. Compiled on its own, the loop vectorises over the row's plain 1-D
+    buffers (measured: 1 ns a fragment instead of 6); without reference counts, those row
+    views cost nothing to take (counted, 8 % of a ``translucent-three`` frame went to the
+    counts of six views a run)."""
+    seen_row, sum_r, sum_g, sum_b = seen[row], sums[SUM_R, row], sums[SUM_G, row], sums[SUM_B, row]
+    weight, transmit = sums[WEIGHT, row], sums[TRANSMIT, row]
     for i in range(count):
-        fresh = seen[i] == 0
-        j = np.uint64(first + i)
-        sum_r[i], sum_g[i], sum_b[i], weight[i], transmit[i] = oit_add(
-            F32_ZERO if fresh else sum_r[i], F32_ZERO if fresh else sum_g[i], F32_ZERO if fresh else sum_b[i],
-            F32_ZERO if fresh else weight[i], F32_ONE if fresh else transmit[i], colour[0, j], colour[1, j],
+        p, j = np.uint64(c0 + i), np.uint64(first + i)
+        fresh = seen_row[p] == 0
+        sum_r[p], sum_g[p], sum_b[p], weight[p], transmit[p] = oit_add(
+            F32_ZERO if fresh else sum_r[p], F32_ZERO if fresh else sum_g[p], F32_ZERO if fresh else sum_b[p],
+            F32_ZERO if fresh else weight[p], F32_ONE if fresh else transmit[p], colour[0, j], colour[1, j],
             colour[2, j], a)
-        seen[i] += 1
+        seen_row[p] += 1
 
 
 @njit(cache=True, inline="always")
@@ -332,9 +336,7 @@ def emit_run(colour, first, a, row, c0, count, seen, start, colours, sums):
             colours[j, 0], colours[j, 1], colours[j, 2] = colour[0, first + i], colour[1, first + i], colour[2, first + i]
             seen[row, c0 + i] += 1
     else:
-        c1 = c0 + count
-        add_run_to_oit(colour, first, a, count, seen[row, c0:c1], sums[SUM_R, row, c0:c1], sums[SUM_G, row, c0:c1],
-                       sums[SUM_B, row, c0:c1], sums[WEIGHT, row, c0:c1], sums[TRANSMIT, row, c0:c1])
+        add_run_to_oit(colour, first, a, row, c0, count, seen, sums)
 
 
 @njit(cache=True, inline="always")
@@ -427,7 +429,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
         inputs = (materials, textures, lights, lit)  # made inside the parallel loop: numba passes no tuple into it
         scratch = span_scratch(width)  # a run's points, linear colours and texture coordinates
         colour = scratch[1]
-        batch = batch_scratch(width)  # a triangle's runs on a strip: points, colours, (row, c0, count)
+        run_points, run_colours, runs = batch_scratch(width)  # a triangle's runs on a strip
         behind = np.empty(3, np.int64)
         out = np.empty(3, np.int64)
         nearest = np.empty(STRIP_ROWS, np.int32)  # the nearest opaque depth of each of the strip's rows
@@ -438,6 +440,8 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                     seen[row, col] = 0
                 nearest[row - lo] = nearest_in_row(opaque_depth, row)
             for k in range(setup.ccw.shape[0]):
+                if setup.rows[k, 0] > hi or setup.rows[k, 1] < lo:  # not on this strip
+                    continue
                 o = geo.tri_object[frags.clip_source[k]]
                 a = np.float32(materials.opacity[o])
                 batched = spans and lit_in_batches(o, materials, textures, lights)
@@ -462,19 +466,18 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                             col += 1
                             continue
                         if batched:  # lit with the triangle's other runs on this strip, below
-                            batch_points(k, row, c0, col - c0, frags, geo, face, batch[0], n_points)
-                            runs = batch[2]
+                            batch_points(k, row, c0, col - c0, frags, geo, face, run_points, n_points)
                             runs[n_runs, 0], runs[n_runs, 1], runs[n_runs, 2] = row, c0, col - c0
                             n_runs, n_points = n_runs + 1, n_points + col - c0
                             continue
                         span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, scratch)
                         emit_run(colour, 0, a, row, c0, col - c0, seen, start, colours, sums)
                 if n_runs:
-                    light_batch(o, materials, lights, batch[0], n_points, batch[1])
+                    light_batch(o, materials, lights, run_points, n_points, run_colours)
                     first = 0
                     for r in range(n_runs):
-                        row, c0, count = batch[2][r, 0], batch[2][r, 1], batch[2][r, 2]
-                        emit_run(batch[1], first, a, row, c0, count, seen, start, colours, sums)
+                        row, c0, count = runs[r, 0], runs[r, 1], runs[r, 2]
+                        emit_run(run_colours, first, a, row, c0, count, seen, start, colours, sums)
                         first += count
             if not fill:
                 for row in range(lo, hi + 1):
