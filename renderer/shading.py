@@ -118,11 +118,20 @@ def plane_normal(a, b, c, n):
 
 
 @njit(cache=True, parallel=True)
-def face_normals(verts, triangles, out):
-    """:func:`plane_normal` of every triangle (T, 3) of ``verts`` into ``out`` (T, 3), once
-    per frame: flat shading reads its triangle's, instead of working it out at every pixel."""
-    for t in prange(triangles.shape[0]):
+def face_normals_of(verts, triangles, which, out):
+    """:func:`plane_normal` of triangles ``which`` (M,) int64 of ``triangles`` (T, 3) of
+    ``verts`` into their rows of ``out`` (T, 3), once per frame: flat shading reads its
+    triangle's, instead of working it out at every pixel. The other rows are left as they
+    are (a frame computes the normals of the triangles it shows only,
+    :func:`renderer.pipeline.shown_sources`)."""
+    for i in prange(which.shape[0]):
+        t = which[i]
         plane_normal(verts[triangles[t, 0]], verts[triangles[t, 1]], verts[triangles[t, 2]], out[t])
+
+
+def face_normals(verts, triangles, out):
+    """:func:`face_normals_of` every triangle."""
+    face_normals_of(verts, triangles, np.arange(len(triangles), dtype=np.int64), out)
 
 
 class Fragments(NamedTuple):

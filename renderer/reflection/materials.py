@@ -34,6 +34,13 @@ def any_flat(materials) -> bool:
     return bool(np.isin(materials.shading_path, (PIXEL_FACE_NORMAL, FACE_COLOUR)).any())
 
 
+def any_face_colour(materials) -> bool:
+    """True when some object holds one colour per triangle (:data:`FACE_COLOUR`): the frame
+    lights each of its triangles (:func:`renderer.lit_colours.light_faces`), shown or not,
+    so it reads every triangle's plane normal."""
+    return bool((materials.shading_path == FACE_COLOUR).any())
+
+
 def smooth(obj) -> bool:
     """True when ``obj`` is shaded with its vertex normals: a gouraud or phong object that has
     them (without point normals every shading falls back to flat)."""

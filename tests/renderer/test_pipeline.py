@@ -399,31 +399,58 @@ def test_the_scene_tables_live_in_the_workspace_and_what_render_stages_returns_i
         np.testing.assert_array_equal(held, now)
 
 
-@pytest.mark.parametrize("shading, model, computed", [("phong", "vtk", False), ("gouraud", "vtk", False),
-                                                      ("flat", "vtk", True), ("flat", "opengl", True)])
+@pytest.mark.parametrize("shading, model, computed", [("phong", "vtk", "none"), ("gouraud", "vtk", "none"),
+                                                      ("flat", "vtk", "shown"), ("flat", "opengl", "all")])
 def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, model, computed, monkeypatch):
-    """Flat shading reads each triangle's plane normal (lit per pixel under the vtk model, per
-    triangle under opengl); phong and gouraud (vertex normals) do not, and their frames skip
-    working them out. Either way the frame has the bytes of one that worked them out, with the
-    workspace's table poisoned first (stale normals from an earlier frame cannot hide a frame
-    that reads them unworked); ``render_stages`` always has them."""
+    """Flat shading reads the plane normals of the triangles it shows (lit per pixel under the
+    vtk model), or of every triangle (lit once each under opengl); phong and gouraud (vertex
+    normals) read none, and their frames skip working them out. Either way the frame has the
+    bytes of one that worked them all out, with the workspace's table poisoned first (stale
+    normals from an earlier frame cannot hide a frame that reads them unworked);
+    ``render_stages`` always has them all."""
     import renderer.pipeline as pipeline
     from renderer.pipeline import render_stages
     from renderer.workspace import thread_workspace
 
     scene = load_scene("textbook-sphere").with_overrides(shading=shading, model=model)
     triangles = sum(o.mesh.n_triangles for o in scene.objects)
-    monkeypatch.setattr(pipeline, "any_flat", lambda materials: True)
+    monkeypatch.setattr(pipeline, "any_face_colour", lambda materials: True)
     expected = render(scene).rgb
     monkeypatch.undo()
-    calls = []
-    original = pipeline.face_normals
-    monkeypatch.setattr(pipeline, "face_normals", lambda *a: calls.append(1) or original(*a))
+    worked_out = []
+    original = pipeline.face_normals_of
+    monkeypatch.setattr(pipeline, "face_normals_of", lambda *a: worked_out.append(len(np.unique(a[2]))) or original(*a))
+    monkeypatch.setattr(pipeline, "face_normals", lambda verts, tris, out: pipeline.face_normals_of(
+        verts, tris, np.arange(len(tris), dtype=np.int64), out))
     thread_workspace().array("geometry.face_normals", (triangles, 3)).fill(np.nan)
     np.testing.assert_array_equal(render(scene).rgb, expected)
-    assert bool(calls) == computed
+    assert {"none": worked_out == [], "all": worked_out == [triangles],
+            "shown": len(worked_out) == 1 and 0 < worked_out[0] < triangles / 2}[computed], worked_out
     _, stages = render_stages(scene)
     assert np.allclose(np.linalg.norm(stages.geometry.face_normals, axis=1), 1.0)
+
+
+def test_a_flat_frame_works_out_the_normals_of_what_it_shows_with_the_bytes_of_all(monkeypatch):
+    """On the view-volume scene made flat (triangles cut into pieces, a soup across the eye
+    plane, a translucent ball across an edge) a frame works out only the plane normals of
+    the triangles that won a pixel and of the translucent ones, the rest poisoned: the same
+    bytes as :func:`render_stages`, which works them all out, lean and plain, z-buffer and painter."""
+    from dataclasses import replace
+
+    from renderer import RenderOptions, render_stages
+    from renderer.workspace import thread_workspace
+
+    for settings in (RenderSettings(), RenderSettings(hidden_surface="painter")):
+        base = view_volume_scene(settings)
+        scene = replace(base, objects=tuple(replace(o, shading="flat") for o in base.objects))
+        expected = render_stages(scene)[0]
+        assert 0.3 < expected.coverage.mean() < 1.0
+        for options in (RenderOptions(), RenderOptions(lean=False)):
+            thread_workspace().array("geometry.face_normals", (sum(o.mesh.n_triangles for o in scene.objects), 3)
+                                     ).fill(np.nan)
+            frame = render(scene, options)
+            for name in ("rgb", "depth", "coverage"):
+                np.testing.assert_array_equal(getattr(frame, name), getattr(expected, name), err_msg=name)
 
 
 def test_a_frame_painted_from_held_colours_builds_no_planes_and_keeps_the_bytes(monkeypatch):
