@@ -193,6 +193,24 @@ def test_trivial_accept_and_reject_give_what_cutting_every_triangle_gives(seed):
         np.testing.assert_array_equal(a, b)
 
 
+def test_many_straddling_triangles_are_cut_as_each_would_be_alone():
+    """Hundreds of triangles straddling planes, cut :data:`~renderer.clip.CLIP_CHUNK` at a time in
+    parallel: each one's pieces, in source order, are the very ones it gets clipped alone."""
+    from renderer.clip import CLIP_CHUNK
+
+    rng = np.random.default_rng(7)
+    verts = rng.uniform(-2.0, 2.0, (900, 4))
+    verts[:, 3] = rng.uniform(0.5, 1.5, 900)
+    tris = rng.integers(0, 900, (5 * CLIP_CHUNK + 9, 3))
+    together = clip_triangles(verts, tris)
+    alone = [clip_triangles(verts, tris[t:t + 1]) for t in range(len(tris))]
+    cut = sum(len(a[2]) != 1 or not np.array_equal(a[0][0], verts[tris[t]]) for t, a in enumerate(alone))
+    assert cut > 2 * CLIP_CHUNK
+    np.testing.assert_array_equal(together[0], np.concatenate([a[0] for a in alone]))
+    np.testing.assert_array_equal(together[1], np.concatenate([a[1] for a in alone]))
+    np.testing.assert_array_equal(together[2], np.concatenate([t + a[2] for t, a in enumerate(alone)]))
+
+
 # (plane, a clip-space vertex outside it): near z < −w, far z > w, right x > w, left x < −w, top y > w, bottom y < −w
 OUTSIDE = [(0, (0.0, 0.0, -2.0, 1.0)), (1, (0.0, 0.0, 2.0, 1.0)), (2, (2.0, 0.0, 0.0, 1.0)),
            (3, (-2.0, 0.0, 0.0, 1.0)), (4, (0.0, 2.0, 0.0, 1.0)), (5, (0.0, -2.0, 0.0, 1.0))]
@@ -220,13 +238,13 @@ def test_triangles_kept_whole_are_named_not_copied(plane, out):
 
 
 def test_a_mesh_inside_the_view_volume_never_reaches_the_cutting_passes(monkeypatch):
-    """Every triangle trivially accepted or rejected: ``count_pieces`` and ``write_pieces`` (and
+    """Every triangle trivially accepted or rejected: ``cut_polygons`` and ``write_pieces`` (and
     the clipping of a polygon they call) are not run, so a fresh process drawing such a scene
     never compiles them; one straddling triangle runs both, once."""
     import renderer.clip as clip
 
     calls = []
-    for name in ("count_pieces", "write_pieces"):
+    for name in ("cut_polygons", "write_pieces"):
         original = getattr(clip, name)
         monkeypatch.setattr(clip, name, lambda *a, _k=original, _n=name: calls.append(_n) or _k(*a))
     verts = np.array([(0.1, 0.1, 0.1, 1.0), (0.3, -0.2, 0.0, 1.0), (-0.2, 0.4, -0.3, 1.0), (0.0, 0.0, -3.0, 1.0),
@@ -235,4 +253,4 @@ def test_a_mesh_inside_the_view_volume_never_reaches_the_cutting_passes(monkeypa
     clipped = clip.clip_mesh(verts, inside_and_outside)
     assert calls == [] and clipped.source.tolist() == [0] and len(clipped.piece_clip) == 0
     clip.clip_mesh(verts, np.array([[0, 1, 2], [0, 1, 3]], np.int64))
-    assert calls == ["count_pieces", "write_pieces"]
+    assert calls == ["cut_polygons", "write_pieces"]
