@@ -31,8 +31,8 @@ from renderer.painter import painter_order
 from renderer.raster import BATCH, IndexedTriangles, frame_depth_and_coverage, rasterize_visibility, weight_planes
 from renderer.reflection.materials import any_face_colour, any_flat
 from renderer.reflection.registry import material_table
-from renderer.shading import (Fragments, ShadingInputs, face_normals, face_normals_of, fragments, painted_from_held, shade,
-                              to_8bit)
+from renderer.plane_normals import face_normals, face_normals_of
+from renderer.shading import Fragments, ShadingInputs, fragments, painted_from_held, shade, to_8bit
 from renderer.texture_sampling import texture_table
 from renderer.translucency import draw_translucent
 from renderer.transform import normal_matrix, transform_vertices
@@ -225,7 +225,7 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
 def shown_sources(won: ClippedMesh, translucent_sources: np.ndarray) -> np.ndarray:
     """The source triangles whose plane normals a flat frame reads (int64, repeats allowed):
     those that won a pixel of the opaque pass and every translucent one. Only these are
-    worked out (:func:`renderer.shading.face_normals_of`): a 327,680-triangle sphere at
+    worked out (:func:`renderer.plane_normals.face_normals_of`): a 327,680-triangle sphere at
     512² shows one in six of its triangles (51,191), a level-4 Menger sponge (672,768
     triangles) one in seventeen."""
     return np.concatenate([np.asarray(won.clip_source, np.int64), np.asarray(translucent_sources, np.int64)])

@@ -14,7 +14,8 @@ from renderer.lit_colours import LitColours
 from renderer.pipeline import SceneGeometry
 from renderer.raster import screen_weights, set_up
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
-from renderer.shading import face_normals, fragment_colour
+from renderer.plane_normals import face_normals
+from renderer.shading import fragment_colour
 from renderer.shading import fragments as make_fragments
 from renderer.shading import with_span_table
 from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, Textures, pack_lanes

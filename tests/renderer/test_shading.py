@@ -12,8 +12,9 @@ from renderer.pipeline import SceneGeometry
 from renderer.reflection.materials import (FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED,
                                            VERTEX_COLOUR)
 from renderer.raster import screen_weights
-from renderer.shading import (ShadingInputs, face_normals, fragment_weights, plane_normal, shade,
-                              span_covers, span_tcoords, spans_cover_all, to_8bit)
+from renderer.plane_normals import face_normals
+from renderer.shading import (ShadingInputs, fragment_weights, shade, span_covers, span_tcoords, spans_cover_all,
+                              to_8bit)
 from renderer.shading import fragments as make_fragments
 from renderer.shading import with_span_table
 from renderer.texture_sampling import NEAREST, REPEAT, Textures, pack_lanes
@@ -123,15 +124,6 @@ def test_a_spans_texture_coordinates_are_the_bits_of_its_pixels_one_at_a_time(pe
             span_tcoords(k, row, c0, count, frags, geo, st)
             expected = [pixel_tcoords(k, row, c0 + i, frags, geo) for i in range(count)]
             assert st[:, c0:c0 + count].T.tolist() == [list(e) for e in expected], (k, row, c0)
-
-
-def test_plane_normal_is_the_unit_cross_product_and_zero_when_degenerate():
-    """(1,0,0) − 0 × (0,2,0) − 0 = (0,0,2) → (0,0,1); three points on a line → 0."""
-    n = np.empty(3)
-    plane_normal(np.zeros(3), np.array([1.0, 0, 0]), np.array([0, 2.0, 0]), n)
-    np.testing.assert_allclose(n, [0, 0, 1])
-    plane_normal(np.zeros(3), np.array([1.0, 0, 0]), np.array([2.0, 0, 0]), n)
-    np.testing.assert_allclose(n, [0, 0, 0])
 
 
 # --------------------------------------------------------------------------- colours by path
