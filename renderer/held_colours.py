@@ -24,7 +24,7 @@ from renderer.float32_math import unorm8
 from renderer.jit import njit, prange
 from renderer.lit_colours import face_colour
 from renderer.raster import EMPTY
-from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, any_flat
+from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, any_face_colour
 from renderer.reflection.registry import light_points, span_normal_only, spans_normal_only, store_span
 from renderer.spans import F0, face_toward_viewer
 from renderer.workspace import empty
@@ -46,21 +46,18 @@ def all_held(materials, lights) -> bool:
 
 
 @njit(cache=True)
-def held_colours(frags, geo, materials, lights, lit, points, colour, stored, out):
+def held_colours(frags, geo, materials, lights, points, colour, stored, out):
     """The 8-bit colour of every clipped triangle of ``frags`` whose object is
-    :func:`held_per_triangle` or ``FACE_COLOUR`` into ``out`` (K, 3) uint8 (other rows are
-    left as they are). A ``FACE_COLOUR`` triangle's is its source triangle's lit colour,
-    primary + secondary (``lit.face``), as 8 bits. A held triangle's: its plane normal
-    turned toward the viewer, as float32 (the normal :func:`renderer.spans.span_pixel` gives
-    every pixel of a flat triangle), lit by the object's span kernel and stored as 8 bits.
+    :func:`held_per_triangle` into ``out`` (K, 3) uint8 (other rows are left as they are):
+    its plane normal turned toward the viewer, as float32 (the normal
+    :func:`renderer.spans.span_pixel` gives every pixel of a flat triangle), lit by the
+    object's span kernel and stored as 8 bits.
     An object's triangles are lit together, as one run of points (``points`` (6, ≥ K),
     ``colour`` (3, ≥ K) float32 and ``stored`` (≥ K, 3) uint8 scratch): one call, whose loop
     runs 8 triangles at a time. The positions are not needed (the colour depends on the
     normal alone) and are 0."""
     count = frags.clip_source.shape[0]
     for o in range(materials.shading_path.shape[0]):
-        if materials.shading_path[o] == FACE_COLOUR:
-            face_colours(o, frags, geo, lit, out)
         if not held_per_triangle(o, materials, lights):
             continue
         n = 0
@@ -80,26 +77,33 @@ def held_colours(frags, geo, materials, lights, lit, points, colour, stored, out
                 n += 1
 
 
-@njit(cache=True, inline="always")
-def face_colours(o, frags, geo, lit, out):
-    """Object ``o``'s FACE_COLOUR triangles: their lit colour as 8 bits into ``out`` (K, 3)."""
+@njit(cache=True)
+def face_colours(frags, geo, materials, lit, out):
+    """The 8-bit colour of every clipped triangle of ``frags`` whose object is ``FACE_COLOUR``
+    (flat under the opengl or classic model) into ``out`` (K, 3): its source triangle's lit
+    colour, primary + secondary (``lit.face``). A kernel of its own, run only when such an
+    object is in the frame: inside :func:`held_colours` it cost every flat frame 0.3 s of
+    compile on a cold start."""
     for k in range(frags.clip_source.shape[0]):
         s = frags.clip_source[k]
-        if geo.tri_object[s] == o:
+        if materials.shading_path[geo.tri_object[s]] == FACE_COLOUR:
             r, g, b = face_colour(lit, s)
             out[k, 0], out[k, 1], out[k, 2] = unorm8(r), unorm8(g), unorm8(b)
 
 
 def held_colour_table(frags, geo, materials, lights, lit, ws=None) -> np.ndarray:
-    """(K, 3) uint8 (:func:`held_colours`) for the K clipped triangles of ``frags``; the kernel
-    runs only when some object is flat (``PIXEL_FACE_NORMAL`` or ``FACE_COLOUR``). Scratch in
-    workspace ``ws``."""
+    """(K, 3) uint8 for the K clipped triangles of ``frags``: :func:`held_colours` where some
+    object is :func:`held_per_triangle`, :func:`face_colours` where some is ``FACE_COLOUR``;
+    each kernel runs only when its kind is in the frame. Scratch in workspace ``ws``."""
     count = len(frags.clip_source)
     out = np.zeros((count, 3), np.uint8)
-    if any_flat(materials):
-        held_colours(frags, geo, materials, lights, lit, empty(ws, "held.points", (6, max(count, 1)), np.float32),
+    if any(path == PIXEL_FACE_NORMAL and spans_normal_only(o, materials, lights)
+           for o, path in enumerate(materials.shading_path)):
+        held_colours(frags, geo, materials, lights, empty(ws, "held.points", (6, max(count, 1)), np.float32),
                      empty(ws, "held.colour", (3, max(count, 1)), np.float32),
                      empty(ws, "held.stored", (max(count, 1), 3), np.uint8), out)
+    if any_face_colour(materials):
+        face_colours(frags, geo, materials, lit, out)
     return out
 
 

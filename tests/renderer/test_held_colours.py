@@ -118,3 +118,20 @@ def test_paint_rows_gives_each_pixel_its_triangles_row_and_empty_ones_the_backgr
         paint_rows(tri_index, held, background, bands, rgb)
         expected = np.where((tri_index < 0)[..., None], background, held[np.maximum(tri_index, 0)])
         np.testing.assert_array_equal(rgb, expected)
+
+
+@pytest.mark.parametrize("models, kernels", [(("vtk", "vtk"), ["held_colours"]), (("opengl", "classic"), ["face_colours"]),
+                                             (("opengl", "vtk"), ["held_colours", "face_colours"])],
+                         ids=["held", "face-colour", "both"])
+def test_each_table_kernel_runs_only_when_its_kind_of_flat_object_is_in_the_frame(models, kernels, monkeypatch):
+    """Under a headlight, vtk flat objects are held (lit once per triangle, held_colours) and
+    opengl or classic flat ones carry their lit colour (face_colours): a frame runs, and so
+    compiles, only the kernels its objects need."""
+    import renderer.held_colours as held
+
+    calls = []
+    for name in ("held_colours", "face_colours"):
+        original = getattr(held, name)
+        monkeypatch.setattr(held, name, lambda *a, _k=original, _n=name: calls.append(_n) or _k(*a))
+    render(mixed_balls((headlight(),), models))
+    assert calls == kernels
