@@ -28,7 +28,7 @@ from renderer.clip import Clipped, clip_mesh, clipped_corners, corner_rows
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
-from renderer.raster import BATCH, IndexedTriangles, frame_depth_and_coverage, rasterize_visibility, weight_planes
+from renderer.raster import BATCH, IndexedTriangles, rasterize_visibility, weight_planes
 from renderer.reflection.materials import any_face_colour, any_flat
 from renderer.reflection.registry import material_table
 from renderer.plane_normals import face_normals, face_normals_of
@@ -68,7 +68,7 @@ class SceneGeometry(NamedTuple):
     """Every object's vertices after stages 1–3 and its triangles, concatenated in draw order.
 
     verts_view (N, 3) view-space positions; verts_clip (N, 4) clip-space positions;
-    normals_view (N, 3) view-space vertex normals, unnormalised (zeros when the object has
+    outcodes (N,) uint8 each clip-space position's outcode (:func:`renderer.clip.outcode`); normals_view (N, 3) view-space vertex normals, unnormalised (zeros when the object has
     none); triangles (T, 3) indices into those rows; tri_object (T,) each triangle's
     object; vert_object (N,) each vertex's object; tcoords (N, 2) texture coordinates
     (zeros when the object has none); face_normals (T, 3) each triangle's unit view-space
@@ -79,6 +79,7 @@ class SceneGeometry(NamedTuple):
 
     verts_view: np.ndarray
     verts_clip: np.ndarray
+    outcodes: np.ndarray
     normals_view: np.ndarray
     triangles: np.ndarray
     tri_object: np.ndarray
@@ -161,7 +162,7 @@ def clip_and_map(geo: SceneGeometry, width: int, height: int, ws=None, trivial: 
     """Stages 4 and 5: clip the scene's triangles (:func:`renderer.clip.clip_mesh`; ``trivial``
     False cuts every one) and map the scene's vertices and the pieces' corners to the
     window, once each."""
-    clipped = clip_mesh(geo.verts_clip, geo.triangles, ws, trivial)
+    clipped = clip_mesh(geo.verts_clip, geo.triangles, ws, trivial, geo.outcodes)
     n, p = len(geo.verts_clip), len(clipped.piece_clip)
     window = empty(ws, "window.window", (n + 3 * p, 3))
     fixed = empty(ws, "window.fixed", (n + 3 * p, 2), np.int64)
@@ -195,6 +196,7 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
     firsts = np.concatenate([[0], np.cumsum(n_triangles)]).astype(np.int64)
     n, t = int(starts[-1]), int(firsts[-1])
     verts_view, verts_clip = empty(ws, "geometry.verts_view", (n, 3)), empty(ws, "geometry.verts_clip", (n, 4))
+    codes = empty(ws, "geometry.outcodes", n, np.uint8)
     normals, tcoords = empty(ws, "geometry.normals_view", (n, 3)), empty(ws, "geometry.tcoords", (n, 2))
     tri_object, vert_object = empty(ws, "geometry.tri_object", t, np.int64), empty(ws, "geometry.vert_object", n, np.int64)
     no_normals = np.empty((0, 3))
@@ -205,7 +207,7 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
         transform_vertices(np.ascontiguousarray(mesh.points, dtype=np.float64), model_to_view, view_to_clip_m,
                            np.ascontiguousarray(mesh.point_normals, dtype=np.float64) if has_normals else no_normals,
                            normal_matrix(model_to_view) if has_normals else np.eye(3),
-                           verts_view[a:b], verts_clip[a:b], normals[a:b])
+                           verts_view[a:b], verts_clip[a:b], normals[a:b], codes[a:b])
         tcoords[a:b] = mesh.tcoords if mesh.tcoords is not None else 0.0
         vert_object[a:b] = i
         tri_object[firsts[i]:firsts[i + 1]] = i
@@ -218,7 +220,7 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
     normals_face = empty(ws, "geometry.face_normals", (t, 3))
     if with_face_normals:
         face_normals(verts_view, triangles, normals_face)
-    return SceneGeometry(verts_view, verts_clip, normals, triangles, tri_object, vert_object, tcoords, normals_face,
+    return SceneGeometry(verts_view, verts_clip, codes, normals, triangles, tri_object, vert_object, tcoords, normals_face,
                          bool(scene.camera.parallel))
 
 
@@ -348,7 +350,7 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     frags = shading_fragments(won, vis.tri_index, perspective, ws, planes=not painted_from_held(inputs, options.spans))
     shade(frags, geo, inputs,
           to_8bit(np.asarray(scene.image.background)), rgb, spans=options.spans)
-    window_depth, coverage = frame_depth_and_coverage(vis)
+    window_depth, coverage = vis.window_depth, vis.covered
     if translucent.any():
         coverage = coverage | draw_translucent(clipped.take(translucent).written_out(), vis.depth, rgb, geo, inputs,
                                                scene.render.transparency, perspective, rules, ws, options.spans)

@@ -7,27 +7,28 @@ winners only, they stay as long as the image has pixels, however many triangles 
 scene has. The winners keep their draw order, so a pixel's triangle number changes but
 not which triangle it is, nor which pixels show the same one.
 
-Three passes (:func:`visible_triangles`): mark every triangle some pixel shows (rows in
-parallel; two threads may both write 1 for the same triangle, the same value), number the
-marked ones in draw order (one pass over the triangles), then rewrite the pixels (rows in
-parallel). With numpy's masks and fancy indexing instead, a 1024² frame of a 328k-triangle
-sphere spent 7.8 ms here.
+Three passes (:func:`visible_triangles`): mark every triangle some pixel shows, number the
+marked ones in draw order (one pass over the triangles), then rewrite the pixels. With
+numpy's masks and fancy indexing instead, a 1024² frame of a 328k-triangle sphere spent
+7.8 ms here.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from renderer.jit import njit, prange
+from renderer.jit import njit
 from renderer.raster import EMPTY
 from renderer.workspace import empty
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True)
 def over_shown(tri_index, number, renumber):
-    """Every covered pixel of ``tri_index`` (H, W), rows in parallel: ``renumber`` False marks
-    its triangle (``number[k] = 1``); True rewrites the pixel as its triangle's number
-    ``number[k]``. (One kernel for both passes: one compiled, not two.)"""
-    for row in prange(tri_index.shape[0]):
+    """Every covered pixel of ``tri_index`` (H, W): ``renumber`` False marks its triangle
+    (``number[k] = 1``); True rewrites the pixel as its triangle's number ``number[k]``. (One
+    kernel for both passes: one compiled, not two.) One thread: rows in parallel gained
+    nothing at 512² and 0.1 ms a pass at 1024² (ico7, igea-1m, 2 threads, in one process),
+    and cost a cold start 0.4 s of compile."""
+    for row in range(tri_index.shape[0]):
         for col in range(tri_index.shape[1]):
             k = tri_index[row, col]
             if k != EMPTY:

@@ -193,6 +193,24 @@ def test_trivial_accept_and_reject_give_what_cutting_every_triangle_gives(seed):
         np.testing.assert_array_equal(a, b)
 
 
+def test_outcodes_given_are_used_as_the_clipper_would_work_them_out():
+    """clip_mesh given the vertices' outcodes (the pipeline's, from the transform) gives what it
+    gives working them out itself; codes that say "inside" for a vertex beyond the near plane
+    keep its triangle whole: the codes given are the ones used."""
+    from renderer.clip import clip_mesh, outcodes
+
+    rng = np.random.default_rng(3)
+    verts = rng.uniform(-2.0, 2.0, (200, 4))
+    verts[:, 3] = rng.uniform(0.5, 1.5, 200)
+    tris = rng.integers(0, 200, (300, 3))
+    codes = np.empty(200, np.uint8)
+    outcodes(verts, codes)
+    for a, b in zip(clip_mesh(verts, tris, codes=codes), clip_mesh(verts, tris)):
+        np.testing.assert_array_equal(a, b)
+    lying = clip_mesh(verts, tris, codes=np.zeros(200, np.uint8))
+    assert (lying.piece < 0).all() and lying.source.tolist() == list(range(300))
+
+
 def test_many_straddling_triangles_are_cut_as_each_would_be_alone():
     """Hundreds of triangles straddling planes, cut :data:`~renderer.clip.CLIP_CHUNK` at a time in
     parallel: each one's pieces, in source order, are the very ones it gets clipped alone."""

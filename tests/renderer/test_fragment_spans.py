@@ -33,7 +33,7 @@ def geometry():
     tris = np.array([[0, 1, 2]])
     plane = np.empty((1, 3))
     face_normals(verts, tris, plane)
-    return SceneGeometry(verts, np.c_[verts, [3.0, 4.0, 2.5]], normals, tris, np.zeros(1, np.int64),
+    return SceneGeometry(verts, np.c_[verts, [3.0, 4.0, 2.5]], np.zeros(3, np.uint8), normals, tris, np.zeros(1, np.int64),
                          np.zeros(3, np.int64), np.array([[-0.3, 0.1], [1.6, 0.2], [0.4, 1.3]]), plane, False)
 
 

@@ -17,7 +17,7 @@ LIT = [0.4, 0.6, 0.8]
 
 def geometry(normals):
     verts = np.array([[0.0, 0.0, -2.0], [1.0, 0.0, -2.0], [0.0, 1.0, -2.0]])
-    return SceneGeometry(verts, np.c_[verts, np.ones(3)], np.asarray(normals, float), np.array([[0, 1, 2]]),
+    return SceneGeometry(verts, np.c_[verts, np.ones(3)], np.zeros(3, np.uint8), np.asarray(normals, float), np.array([[0, 1, 2]]),
                          np.zeros(1, np.int64), np.zeros(3, np.int64), np.zeros((3, 2)), np.array([[0.0, 0, 1]]), False)
 
 

@@ -489,17 +489,39 @@ def test_integer_z_buffer_matches_a_float_z_buffer_on_overlapping_triangles():
     np.testing.assert_array_equal(depth, zbuf / DEPTH_MAX)
 
 
-def test_frame_depth_and_coverage_are_the_buffers_divided_and_compared_in_one_pass():
-    """Window depth q / (2²⁴ − 1) in float64 and coverage tri_index ≠ EMPTY, as numpy writes them."""
-    from renderer.raster import DEPTH_CLEAR, EMPTY, Visibility, depth_to_window, frame_depth_and_coverage
+@pytest.mark.parametrize("tall", [False, True], ids=["dividing", "walking"])
+@pytest.mark.parametrize("batch", [None, 7, 1])
+@pytest.mark.parametrize("n_bands", [1, 3])
+def test_the_frame_depth_and_coverage_are_the_finished_buffer_divided_and_compared(tall, batch, n_bands):
+    """Window depth q / (2²⁴ − 1) in float64 and coverage tri_index ≠ EMPTY, as numpy writes
+    them from the finished buffer: written by each band after the last batch only, on every
+    row (the empty ones, and the last block cut short: 3 bands of 16- or 64-row blocks over
+    71 rows), by the dividing and the walking kernel."""
+    from renderer.raster import EMPTY, depth_to_window, rasterize_visibility, whole_triangles
+
+    width, height = 23, 71
     rng = np.random.default_rng(4)
-    depth = rng.integers(0, 1 << 24, (37, 53)).astype(np.int32)
-    tri_index = rng.integers(-1, 9, (37, 53)).astype(np.int32)
-    depth[tri_index == EMPTY] = DEPTH_CLEAR
-    window_depth, covered = frame_depth_and_coverage(Visibility(depth, tri_index))
-    np.testing.assert_array_equal(window_depth, depth_to_window(depth))
-    np.testing.assert_array_equal(covered, tri_index != EMPTY)
-    assert window_depth[tri_index == EMPTY].tolist() == [1.0] * int((tri_index == EMPTY).sum())
+    if tall:  # every triangle spans the image's height: the walking kernel draws them
+        fixed = rng.integers(-2 * SUBPIXEL, 24 * SUBPIXEL, (40, 3, 2))
+        fixed[:, 0, 1], fixed[:, 1, 1] = -SUBPIXEL, 72 * SUBPIXEL
+    else:  # small ones in the lower half only
+        centres = rng.integers(0, [24 * SUBPIXEL, 30 * SUBPIXEL], (40, 1, 2))
+        fixed = centres + rng.integers(-2 * SUBPIXEL, 2 * SUBPIXEL, (40, 3, 2))
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, rng.uniform(0, 1, (40, 3, 1))], axis=2)
+    vis = rasterize_visibility(whole_triangles(fixed, window), width, height, n_bands=n_bands, batch=batch)
+    covered_rows = (vis.tri_index != EMPTY).any(axis=1)
+    assert covered_rows.any() and (tall or not covered_rows.all())
+    np.testing.assert_array_equal(vis.window_depth, depth_to_window(vis.depth))
+    np.testing.assert_array_equal(vis.covered, vis.tri_index != EMPTY)
+    assert (vis.window_depth[vis.tri_index == EMPTY] == 1.0).all()
+
+
+def test_an_empty_scene_has_an_empty_frame_depth_and_coverage():
+    """No triangles: one pass clears the buffer and finishes it, depth 1.0 and nothing covered."""
+    from renderer.raster import rasterize_visibility, whole_triangles
+
+    vis = rasterize_visibility(whole_triangles(np.zeros((0, 3, 2), np.int64), np.zeros((0, 3, 3))), 9, 5)
+    assert (vis.window_depth == 1.0).all() and not vis.covered.any()
 # --------------------------------------------------------------------------- the walking kernel
 def test_tall_thin_triangles_are_drawn_as_the_reference_draws_them():
     """Triangles tall enough to be walked (the fast path of fill_rows), beside short ones that
@@ -525,8 +547,8 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     thin ones over them, drawn together so that depth ties and overdraw count: the same
     depth and triangle at every pixel. is_tall sends the tall batch to the walking kernel."""
     from renderer.bands import raster_bands
-    from renderer.raster import (DEPTH_CLEAR, EMPTY, FILL_RULES, TALL_ROWS, is_tall, rasterize, rasterize_walking,
-                                 set_up)
+    from renderer.raster import (DEPTH_CLEAR, EMPTY, FILL_RULES, FIRST_BATCH, LAST_BATCH, TALL_ROWS, is_tall, rasterize,
+                                 rasterize_walking, set_up)
     width, height = 37, 90
     rng = np.random.default_rng(5)
     small = random_triangles(rng, 240, width, height)
@@ -544,7 +566,9 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     buffers = []
     for kernel in (rasterize, rasterize_walking):
         depth, tri_index = np.empty((height, width), np.int32), np.empty((height, width), np.int32)
-        kernel(setup, raster_bands(height, 3), FILL_RULES[rule], depth_test, 0, True, depth, tri_index)
+        window_depth, covered = np.empty((height, width)), np.empty((height, width), np.bool_)
+        kernel(setup, raster_bands(height, 3), FILL_RULES[rule], depth_test, 0, FIRST_BATCH | LAST_BATCH, depth,
+               tri_index, window_depth, covered)
         buffers.append((depth, tri_index))
     np.testing.assert_array_equal(buffers[1][1], buffers[0][1])
     np.testing.assert_array_equal(buffers[1][0], buffers[0][0])
@@ -553,3 +577,17 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     assert is_tall(set_up(tall, window[len(small):], height, False)) and not is_tall(set_up(small[:1] * 0, window[:1], height, False))
     rows = set_up(tall, window[len(small):], height, False).rows
     assert (rows[:, 1] - rows[:, 0] + 1).mean() >= TALL_ROWS
+
+
+def test_the_set_up_of_a_chunk_is_compiled_once():
+    """setup_triangles calls set_up_range from its parallel loop, which numba types twice (the
+    loop, then the loop body as a function of its own): the chunk's bounds have one type in
+    both, so the set-up is compiled once, not twice (0.7 s of a cold start)."""
+    from renderer.raster import SETUP_CHUNK, set_up, set_up_range
+
+    rng = np.random.default_rng(8)
+    fixed = rng.integers(0, 20 * SUBPIXEL, (int(SETUP_CHUNK) + 5, 3, 2))
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, rng.uniform(0, 1, (len(fixed), 3, 1))], axis=2)
+    setup = set_up(fixed, window, 20, False)
+    assert (setup.rows[:, 0] <= setup.rows[:, 1]).any()
+    assert len(set_up_range.signatures) == 1

@@ -35,7 +35,7 @@ def triangle(verts_view, normals=None, w=(1.0, 1.0, 1.0), parallel=False):
     tris = np.array([[0, 1, 2]])
     plane = np.empty((1, 3))
     face_normals(verts, tris, plane)
-    return SceneGeometry(verts, clip, normals, tris, np.zeros(1, np.int64), np.zeros(3, np.int64), np.zeros((3, 2)),
+    return SceneGeometry(verts, clip, np.zeros(len(verts), np.uint8), normals, tris, np.zeros(1, np.int64), np.zeros(3, np.int64), np.zeros((3, 2)),
                          plane, parallel)
 
 

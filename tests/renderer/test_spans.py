@@ -135,7 +135,8 @@ def random_clipped_triangles(rng, k=60, n_src=9, n_verts=20, parallel=False):
     tri_clip = np.zeros((k, 3, 4))
     tri_clip[:, :, 3] = rng.uniform(0.3, 6.0, (k, 3))
     cb = rng.random((k, 3, 3))
-    geo = SceneGeometry(rng.normal(size=(n_verts, 3)), np.zeros((n_verts, 4)), rng.normal(size=(n_verts, 3)),
+    geo = SceneGeometry(rng.normal(size=(n_verts, 3)), np.zeros((n_verts, 4)), np.zeros(n_verts, np.uint8),
+                        rng.normal(size=(n_verts, 3)),
                         rng.integers(0, n_verts, (n_src, 3)), rng.integers(0, 3, n_src), np.zeros(n_verts, np.int64),
                         np.zeros((n_verts, 2)), rng.normal(size=(n_src, 3)), parallel)
     return (plane, rng.random(k) < 0.5, tri_clip, cb / cb.sum(axis=2, keepdims=True), rng.integers(0, n_src, k)), geo

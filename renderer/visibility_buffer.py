@@ -1,0 +1,78 @@
+"""The visibility buffer: for each pixel the 24-bit depth and the triangle that won it.
+
+Window rows (y up), as :mod:`renderer.raster` fills them. The depth is an integer: window
+depth 0..1 times 2²⁴ − 1, rounded (:func:`depth_bits`), as in a 24-bit OpenGL depth buffer,
+so equal depths compare equal and the z-buffer test is exact. Each of the raster's bands
+clears its own rows before the first batch of triangles (:func:`clear_band`) and, after the
+last, writes out their window depth and coverage for the frame (:func:`finish_band`); a
+band's rows are dealt as :mod:`renderer.bands` says.
+"""
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from renderer.jit import njit
+from renderer.min_max import clamp, smaller
+
+DEPTH_BITS = 24
+DEPTH_MAX = float((1 << DEPTH_BITS) - 1)
+DEPTH_CLEAR = np.int32((1 << DEPTH_BITS) - 1)
+"""The integer depth buffer's clear value: window depth 1.0."""
+
+EMPTY = -1
+"""``tri_index`` of a pixel no triangle covers."""
+
+
+@njit(cache=True, inline="always")
+def depth_bits(z):
+    """Window depth ``z`` clamped to 0..1 and rounded to the 24-bit depth buffer: an integer
+    0 … 2²⁴ − 1 (the window depth times :data:`DEPTH_MAX`)."""
+    return np.int32(np.floor(clamp(z, 0.0, 1.0) * DEPTH_MAX + 0.5))
+
+
+@njit(cache=True, inline="always")
+def clear_band(b, n_bands, block_rows, depth, tri_index):
+    """Clear band ``b``'s rows (blocks of ``block_rows`` rows, every ``n_bands``-th from block
+    ``b``) of the visibility buffer: depth :data:`DEPTH_CLEAR`, triangle :data:`EMPTY`. A band
+    clears the rows it draws, so no band waits for another."""
+    height, width = depth.shape
+    for block in range(b, (height + block_rows - 1) // block_rows, n_bands):
+        for row in range(block * block_rows, smaller(block * block_rows + block_rows, height)):
+            for col in range(width):
+                depth[row, col] = DEPTH_CLEAR
+                tri_index[row, col] = EMPTY
+
+
+@njit(cache=True, from_python=False, refcounts=False)
+def finish_band(b, n_bands, block_rows, depth, tri_index, window_depth, covered):
+    """Band ``b``'s rows of the finished visibility buffer (blocks of ``block_rows`` rows, as
+    :func:`clear_band`) as the frame's depth and coverage: ``window_depth`` = depth / (2²⁴ − 1)
+    as float64 (:func:`depth_to_window`), ``covered`` = tri_index ≠ :data:`EMPTY`. Done by the
+    band that drew the rows, after the last batch, while they are still in its cache (a
+    parallel pass of its own cost 0.4–0.8 ms a 1024² frame, and 0.4 s of compile on a cold start)."""
+    height, width = depth.shape
+    for block in range(b, (height + block_rows - 1) // block_rows, n_bands):
+        for row in range(block * block_rows, smaller(block * block_rows + block_rows, height)):
+            for col in range(width):
+                window_depth[row, col] = depth[row, col] / DEPTH_MAX
+                covered[row, col] = tri_index[row, col] != EMPTY
+
+
+class Visibility(NamedTuple):
+    """The opaque pass's visibility buffer (window rows, y up): ``depth`` (H, W) int32, the
+    24-bit integer depth (:data:`DEPTH_CLEAR` where empty); ``tri_index`` (H, W) int32, the
+    triangle that won each pixel (:data:`EMPTY` where none); and from them, for the frame,
+    ``window_depth`` (H, W) float64 (:func:`depth_to_window`, 1.0 where empty) and
+    ``covered`` (H, W) bool (tri_index ≠ EMPTY), fresh arrays (not the workspace's)."""
+
+    depth: np.ndarray
+    tri_index: np.ndarray
+    window_depth: np.ndarray
+    covered: np.ndarray
+
+
+def depth_to_window(depth: np.ndarray) -> np.ndarray:
+    """24-bit integer depths → window depth 0..1 as float64 (``q / (2²⁴ − 1)``, 1.0 where empty)."""
+    return depth / DEPTH_MAX
