@@ -37,11 +37,16 @@ def held_per_triangle(o, materials, lights):
     return materials.shading_path[o] == PIXEL_FACE_NORMAL and span_normal_only(o, materials, lights)
 
 
+def holds_per_triangle(o, materials, lights) -> bool:
+    """:func:`held_per_triangle` in Python (for choosing kernels before shading)."""
+    return materials.shading_path[o] == PIXEL_FACE_NORMAL and spans_normal_only(o, materials, lights)
+
+
 def all_held(materials, lights) -> bool:
     """True when every object's triangles are held (:func:`held_per_triangle`, or
     ``FACE_COLOUR``), for objects that :func:`renderer.shading.span_covers` (the same rule in
     Python, for choosing :func:`paint_rows`)."""
-    return all(path == FACE_COLOUR or (path == PIXEL_FACE_NORMAL and spans_normal_only(o, materials, lights))
+    return all(path == FACE_COLOUR or holds_per_triangle(o, materials, lights)
                for o, path in enumerate(materials.shading_path))
 
 
@@ -97,8 +102,7 @@ def held_colour_table(frags, geo, materials, lights, lit, ws=None) -> np.ndarray
     each kernel runs only when its kind is in the frame. Scratch in workspace ``ws``."""
     count = len(frags.clip_source)
     out = np.zeros((count, 3), np.uint8)
-    if any(path == PIXEL_FACE_NORMAL and spans_normal_only(o, materials, lights)
-           for o, path in enumerate(materials.shading_path)):
+    if any(holds_per_triangle(o, materials, lights) for o in range(len(materials.shading_path))):
         held_colours(frags, geo, materials, lights, empty(ws, "held.points", (6, max(count, 1)), np.float32),
                      empty(ws, "held.colour", (3, max(count, 1)), np.float32),
                      empty(ws, "held.stored", (max(count, 1), 3), np.uint8), out)

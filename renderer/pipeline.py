@@ -68,7 +68,8 @@ class SceneGeometry(NamedTuple):
     """Every object's vertices after stages 1–3 and its triangles, concatenated in draw order.
 
     verts_view (N, 3) view-space positions; verts_clip (N, 4) clip-space positions;
-    outcodes (N,) uint8 each clip-space position's outcode (:func:`renderer.clip.outcode`); normals_view (N, 3) view-space vertex normals, unnormalised (zeros when the object has
+    outcodes (N,) uint8 each clip-space position's outcode (:func:`renderer.clip.outcode`);
+    normals_view (N, 3) view-space vertex normals, unnormalised (zeros when the object has
     none); triangles (T, 3) indices into those rows; tri_object (T,) each triangle's
     object; vert_object (N,) each vertex's object; tcoords (N, 2) texture coordinates
     (zeros when the object has none); face_normals (T, 3) each triangle's unit view-space
