@@ -40,7 +40,7 @@ from renderer.min_max import clamp, larger, smaller
 
 from renderer.bands import BLOCK_ROWS, first_block_of_band, one_band_at_a_time, raster_bands
 from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibility, clear_band, depth_bits,
-                                        depth_to_window, finish_band)
+                                        depth_to_window, fill_columns, finish_band)
 from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
 from renderer.window import SUBPIXEL
 from renderer.workspace import empty
@@ -259,6 +259,8 @@ def pixel_fragment(k, row, col, plane):
     return l1, l2, pixel_depth(k, row_depth(k, row, plane), col, plane)
 
 
+"""Pixels of a span filled at a time (:func:`fill_columns`)."""
+
 WALK_ROWS = 4
 """The fewest rows of a stretch whose spans :func:`fill_rows` finds by walking the edges: setting
 up a walk costs more than it saves on fewer. Measured, one thread, the raster alone, with the
@@ -344,30 +346,6 @@ def fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_in
     depth along the row (:func:`row_depth`, and the plane's slope in x)."""
     fill_columns(row, first, last, row_depth(k, row, setup.plane), setup.plane[k, 9], setup.plane[k, 6],
                  np.int32(first_index + k), depth_test, depth, tri_index)
-
-
-@njit(cache=True, inline="always")
-def fill_columns(row, first, last, z_row, zx, ax, kk, depth_test, depth, tri_index):
-    """Fill columns ``first … last`` of scanline ``row`` with triangle ``kk``, whose depth at a
-    pixel centre is :func:`pixel_depth`'s ``z_row + zx·(col + 0.5 − ax)``: depth test,
-    visibility-buffer writes.
-
-    Each pixel of the span is written, with its old values where the test fails, instead of
-    branching on the test: the loop then runs 4–8 pixels at a time, and a test that passes
-    and fails at random (deep overdraw: a Menger sponge) costs no mispredicted branches."""
-    depth_row, index_row = depth[row], tri_index[row]
-    if not depth_test:
-        for col in range(first, last + 1):
-            depth_row[col] = depth_bits(z_row + zx * (col + 0.5 - ax))
-            index_row[col] = kk
-        return
-    for col in range(first, last + 1):
-        at = np.uint64(col)  # unsigned: numba adds no wrap-around for a negative index, which kept this loop scalar
-        z = depth_bits(z_row + zx * (col + 0.5 - ax))
-        old_z, old_k = depth_row[at], index_row[at]
-        nearer = z <= old_z
-        depth_row[at] = z if nearer else old_z
-        index_row[at] = kk if nearer else old_k
 
 
 @njit(cache=True, inline="always")

@@ -5,7 +5,8 @@ depth 0..1 times 2²⁴ − 1, rounded (:func:`depth_bits`), as in a 24-bit Open
 so equal depths compare equal and the z-buffer test is exact. Each of the raster's bands
 clears its own rows before the first batch of triangles (:func:`clear_band`) and, after the
 last, writes out their window depth and coverage for the frame (:func:`finish_band`); a
-band's rows are dealt as :mod:`renderer.bands` says.
+band's rows are dealt as :mod:`renderer.bands` says. A triangle's span on a row is written
+into it by :func:`fill_columns`, the z-buffer test.
 """
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ from typing import NamedTuple
 import numpy as np
 
 from renderer.jit import njit
-from renderer.min_max import clamp, smaller
+from renderer.min_max import clamp, larger, smaller
 
 DEPTH_BITS = 24
 DEPTH_MAX = float((1 << DEPTH_BITS) - 1)
@@ -30,6 +31,66 @@ def depth_bits(z):
     """Window depth ``z`` clamped to 0..1 and rounded to the 24-bit depth buffer: an integer
     0 … 2²⁴ − 1 (the window depth times :data:`DEPTH_MAX`)."""
     return np.int32(np.floor(clamp(z, 0.0, 1.0) * DEPTH_MAX + 0.5))
+
+
+SPAN_LANES = 8
+"""Pixels the depth test of a span takes at a time (:func:`fill_lanes`): a vector register of
+eight int32 depths."""
+
+
+@njit(cache=True, inline="always")
+def fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row):
+    """The depth test of columns ``first … last`` (two or more) of one row (``depth_row``,
+    ``index_row``; see :func:`fill_columns`) in whole groups of :data:`SPAN_LANES` pixels.
+
+    The span is widened to a multiple of the lanes, to the right, or to the left where it
+    would pass the row's end (in an image narrower than the lanes it stays as it is); a
+    pixel outside ``first … last`` keeps its old values, as one whose test fails. The loop
+    then runs in vector steps alone: a span of 2–8 pixels is one step, where the plain loop
+    was scalar (below the vector loop's eight) with a branch a pixel. Measured, the raster
+    alone, one thread, 512²: ico5 (spans of 4.7 pixels on average) 4.8 → 3.7 ms, a level-3
+    Menger sponge 10.1 → 8.6."""
+    count = last - first + 1
+    lanes = (count + SPAN_LANES - 1) & -SPAN_LANES
+    start = first - larger(first + lanes - depth_row.shape[0], 0)
+    if start < 0:
+        start, lanes = first, count
+    for i in range(lanes):
+        col = start + i
+        at = np.uint64(col)  # unsigned: numba adds no wrap-around for a negative index, which kept this loop scalar
+        z = depth_bits(z_row + zx * (col + 0.5 - ax))
+        old_z, old_k = depth_row[at], index_row[at]
+        nearer = (z <= old_z) & (col >= first) & (col <= last)
+        depth_row[at] = z if nearer else old_z
+        index_row[at] = kk if nearer else old_k
+
+
+@njit(cache=True, inline="always")
+def fill_columns(row, first, last, z_row, zx, ax, kk, depth_test, depth, tri_index):
+    """Fill columns ``first … last`` of scanline ``row`` with triangle ``kk``, whose depth at a
+    pixel centre is :func:`pixel_depth`'s ``z_row + zx·(col + 0.5 − ax)``: depth test (LEQUAL),
+    visibility-buffer writes.
+
+    Each pixel is written, with its old values where the test fails, instead of branching
+    on the test, so a test that passes and fails at random (deep overdraw: a Menger sponge)
+    costs no mispredicted branches: one pixel in straight-line code (a min and a select;
+    the slivers of a 1,024-segment cylinder are mostly empty or one pixel wide), more in
+    whole vector lanes (:func:`fill_lanes`)."""
+    depth_row, index_row = depth[row], tri_index[row]
+    if not depth_test:
+        for col in range(first, last + 1):
+            depth_row[col] = depth_bits(z_row + zx * (col + 0.5 - ax))
+            index_row[col] = kk
+        return
+    if last < first:
+        return
+    if last == first:
+        at = np.uint64(first)
+        z, old_z = depth_bits(z_row + zx * (first + 0.5 - ax)), depth_row[at]
+        index_row[at] = kk if z <= old_z else index_row[at]
+        depth_row[at] = smaller(old_z, z)
+        return
+    fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row)
 
 
 @njit(cache=True, inline="always")

@@ -1,13 +1,19 @@
-"""The visibility buffer: 24-bit depths, and each band clearing and finishing its own rows."""
+"""The visibility buffer: 24-bit depths, a span's z-buffer test, and each band clearing and
+finishing its own rows."""
 from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from renderer.bands import BLOCK_ROWS
 from renderer.jit import njit
-from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, clear_band, depth_bits, depth_to_window,
-                                        finish_band)
+from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, SPAN_LANES, clear_band, depth_bits,
+                                        depth_to_window, fill_columns, finish_band)
 
 
 @njit
@@ -22,6 +28,58 @@ def test_depth_bits_round_window_depth_to_the_24_bit_grid_clamped_to_0_1():
     depth_bits_of(z, out)
     assert out.tolist() == [0, 0, 1, 2, int(np.floor(0.25 * DEPTH_MAX + 0.5)), DEPTH_CLEAR, DEPTH_CLEAR]
     assert depth_to_window(np.array([0, DEPTH_CLEAR])).tolist() == [0.0, 1.0]
+
+
+def plain_fill(row, first, last, z_row, zx, ax, kk, depth, tri_index):
+    """The z-buffer test as the course writes it: pixel by pixel, LEQUAL."""
+    for col in range(first, last + 1):
+        z = depth_bits(z_row + zx * (col + 0.5 - ax))
+        if z <= depth[row, col]:
+            depth[row, col], tri_index[row, col] = z, kk
+
+
+@pytest.mark.parametrize("width", [3, SPAN_LANES, 13, 21])
+def test_a_span_is_tested_in_whole_lanes_as_pixel_by_pixel(width):
+    """Every span of every length and place on a row, the last pixel included (a span's
+    lanes that would pass the row's end are taken to the left of it; a row narrower than
+    the lanes is filled as it is), over depths that the span beats, ties and loses to at
+    random: the same buffer as the plain loop, and no pixel off the span touched."""
+    rng = np.random.default_rng(width)
+    z_row, zx, ax, kk = 0.5, 0.01, 0.25, np.int32(7)
+    for first in range(width):
+        for last in range(first - 1, width):
+            old = np.array([depth_bits(z_row + zx * (c + 0.5 - ax)) for c in range(width)], np.int32)
+            old = old + rng.integers(-1, 2, width).astype(np.int32)  # beaten, tied or in front
+            depth, tri_index = np.stack([old, old, old]), np.full((3, width), 3, np.int32)
+            plain_depth, plain_index = depth.copy(), tri_index.copy()
+            fill_columns(1, first, last, z_row, zx, ax, kk, True, depth, tri_index)
+            plain_fill(1, first, last, z_row, zx, ax, kk, plain_depth, plain_index)
+            assert np.array_equal(depth, plain_depth) and np.array_equal(tri_index, plain_index), (first, last)
+
+
+_EVERY_SPAN_AS_PYTHON = """
+import numba
+import numpy as np
+assert numba.config.DISABLE_JIT
+from renderer.visibility_buffer import SPAN_LANES, fill_columns
+for width in (3, SPAN_LANES, 13):
+    for first in range(width):
+        for last in range(first, width):
+            depth, tri_index = np.full((1, width), 1 << 23, np.int32), np.zeros((1, width), np.int32)
+            fill_columns(0, first, last, 0.25, 0.01, 0.0, np.int32(1), True, depth, tri_index)
+            assert tri_index[0].tolist() == [int(first <= c <= last) for c in range(width)]
+"""
+
+
+def test_no_lane_reads_or_writes_outside_the_row():
+    """A lane outside the span writes back what it read, so its values cannot show a lane
+    past the row's end, into the next row (another band's) or past the buffer: run as
+    plain Python (NUMBA_DISABLE_JIT=1), any index past the row raises."""
+    repo = Path(__file__).resolve().parents[2]
+    env = dict(os.environ, NUMBA_DISABLE_JIT="1", PYTHONPATH=os.pathsep.join([str(repo), os.environ.get("PYTHONPATH", "")]))
+    done = subprocess.run([sys.executable, "-c", _EVERY_SPAN_AS_PYTHON], cwd=repo, env=env, capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-3000:]
 
 
 @njit
