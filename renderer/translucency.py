@@ -43,10 +43,12 @@ from renderer.jit import njit, prange
 from renderer.min_max import larger, smaller
 
 from renderer.bands import first_row_of_band, one_band_at_a_time, raster_bands, shading_bands
+from renderer.float32_math import half
 from renderer.fragment_spans import batch_points, light_batch, lit_in_batches, span_linear_colours
 from renderer.raster import DEPTH_CLEAR, FILL_RULES, pixel_depth, row_depth, row_span, set_up
 from renderer.reflection.materials import PIXEL_FACE_NORMAL
 from renderer.shading import ShadingInputs, fragments, span_scratch, unorm8, with_span_table
+from renderer.spans import LANES, whole_lanes
 from renderer.workspace import empty
 
 OIT, DEPTH_PEELING, SORTED = 0, 1, 2
@@ -106,30 +108,6 @@ def collect_fragments(setup, n_bands, rule, depth_test, opaque_depth, count, sta
 
 
 F32_ONE = np.float32(1.0)
-
-
-HALF_MIN_NORMAL = np.float32(2.0 ** -14)
-SUBNORMAL_ROUNDER = np.float32(0.75)  # its float32 step is 2⁻²⁴, the half-float step below HALF_MIN_NORMAL
-SIGN_BIT = np.int64(-(1 << 31))  # float32's sign bit, as the int32 pattern sees it (sign-extended)
-
-
-@njit(cache=True, inline="always")
-def half(x):
-    """``x`` (a float32 value) rounded to the nearest IEEE half float, ties to even, as a
-    float32 — what a 16-bit float render target stores. Normal halves keep 11 of float32's
-    24 significant bits: the low 13 bits of its pattern are rounded off, ties to even.
-    Below 2⁻¹⁴ the step is a fixed 2⁻²⁴ (subnormals): adding and subtracting 0.75, whose
-    float32 step is 2⁻²⁴, rounds to it, ties to even. Both are worked out and one is
-    chosen, with no branch, so a loop of them vectorises. No overflow handling: values
-    here stay ≤ 1e3."""
-    f = np.float32(x)
-    subnormal = (f + SUBNORMAL_ROUNDER) - SUBNORMAL_ROUNDER
-    bits = np.int64(f.view(np.int32))
-    sign = bits & SIGN_BIT
-    magnitude = bits & ~SIGN_BIT
-    magnitude = (magnitude + 0x0FFF + ((magnitude >> 13) & 1)) & ~0x1FFF
-    normal = np.int32(sign | magnitude).view(np.float32)
-    return subnormal if abs(f) < HALF_MIN_NORMAL else normal
 
 
 @njit(cache=True, inline="always")
@@ -297,8 +275,12 @@ def batch_scratch(width):
     """Scratch for a triangle's runs on one strip of an image ``width`` pixels wide (at most one
     fragment a pixel): their points (6, N) and linear colours (3, N) float32
     (:func:`renderer.fragment_spans.batch_points`), and each run's (row, first column,
-    pixels) (N, 3) int64, N = :data:`STRIP_ROWS` · width."""
-    n = STRIP_ROWS * larger(width, 1)
+    pixels) (N, 3) int64, N = :data:`STRIP_ROWS` · (2 · width + :data:`~renderer.spans.LANES`).
+    Each run's points are padded to whole vector lanes (:func:`renderer.spans.whole_lanes`:
+    a run of c ≥ 4 pixels takes at most c + 7 points), and runs on a row are parted by at
+    least one pixel behind the opaque surface, so a row takes at most 8 points for every 5
+    of its pixels (runs of 4 between gaps of 1), plus 4 for a run at its end."""
+    n = STRIP_ROWS * (2 * larger(width, 1) + LANES)
     return np.empty((6, n), np.float32), np.empty((3, n), np.float32), np.empty((n, 3), np.int64)
 
 
@@ -466,9 +448,10 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                             col += 1
                             continue
                         if batched:  # lit with the triangle's other runs on this strip, below
-                            batch_points(k, row, c0, col - c0, frags, geo, face, run_points, n_points)
+                            lanes = whole_lanes(col - c0)  # no scalar tail in the loops over the batch
+                            batch_points(k, row, c0, lanes, frags, geo, face, run_points, n_points)
                             runs[n_runs, 0], runs[n_runs, 1], runs[n_runs, 2] = row, c0, col - c0
-                            n_runs, n_points = n_runs + 1, n_points + col - c0
+                            n_runs, n_points = n_runs + 1, n_points + lanes
                             continue
                         span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, scratch)
                         emit_run(colour, 0, a, row, c0, col - c0, seen, start, colours, sums)
@@ -478,7 +461,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                     for r in range(n_runs):
                         row, c0, count = runs[r, 0], runs[r, 1], runs[r, 2]
                         emit_run(run_colours, first, a, row, c0, count, seen, start, colours, sums)
-                        first += count
+                        first += whole_lanes(count)
             if not fill:
                 for row in range(lo, hi + 1):
                     resolve_oit_row(sums, seen, row, rgb, behind, out)

@@ -1,10 +1,11 @@
-"""float32 pow, log2 and exp2 for the span shaders (renderer/float32_math.py), against float64."""
+"""float32 pow, log2 and exp2 for the span shaders (renderer/float32_math.py), against float64; the
+half-float rounding of the OIT accumulators, against numpy's float16."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from renderer.float32_math import EXP_FLUSH, exp2_f32, log2_f32, pow_f32
+from renderer.float32_math import EXP_FLUSH, exp2_f32, half, log2_f32, pow_f32
 from renderer.jit import njit
 from renderer.reflection.vtk_spans import to8
 
@@ -26,6 +27,12 @@ def _log2_exp2_all(x, logs, exps):
 def _to8_all(v, out):
     for i in range(v.shape[0]):
         out[i] = to8(v[i])
+
+
+@njit(cache=False)
+def _half_all(v, out):
+    for i in range(v.shape[0]):
+        out[i] = half(v[i])
 
 
 X = np.concatenate([np.geomspace(1e-5, 1.0, 100_001), [1.0, 0.5, 0.25]]).astype(np.float32)
@@ -73,3 +80,27 @@ def test_to8_rounds_half_to_even_as_rint_does():
     out = np.empty(len(v), np.uint8)
     _to8_all(v, out)
     np.testing.assert_array_equal(out, np.rint(np.clip(v, 0, 1) * np.float32(255)).astype(np.uint8))
+
+
+def test_half_rounds_as_a_16_bit_float_target():
+    """The OIT accumulators' rounding is IEEE half precision, ties to even, subnormal halves
+    included, in a loop LLVM vectorises (numpy's float16 conversion is the reference)."""
+    rng = np.random.default_rng(5)
+    halves = rng.random(3000).astype(np.float16).astype(np.float32)
+    ties = halves + np.spacing(halves.astype(np.float16)).astype(np.float32) / 2  # halfway to the next half
+    values = np.concatenate([rng.random(2000) * 4, rng.random(500) * 1e-4, rng.random(500) * 1e3, -rng.random(500),
+                             ties, [0.0, 1.0, 2049 / 2048, 1e-7, 2.0 ** -14, 2.0 ** -14 * (1 - 2.0 ** -11),
+                                    2.0 ** -25, 3 * 2.0 ** -26, 65504.0]])
+    values = values.astype(np.float32)  # the kernels round float32 sums
+    ours = np.empty_like(values)
+    _half_all(values, ours)
+    assert np.array_equal(ours, values.astype(np.float16).astype(np.float32))
+
+
+def test_half_keeps_every_half_float_exactly():
+    """Every finite half float is its own rounding: all 63,488 of them, through float32."""
+    every = np.arange(0, 1 << 16, dtype=np.uint16).view(np.float16)
+    every = every[np.isfinite(every)].astype(np.float32)
+    ours = np.empty_like(every)
+    _half_all(every, ours)
+    assert np.array_equal(ours.view(np.uint32), every.view(np.uint32))

@@ -16,8 +16,9 @@ from lab.normals import radial_normals
 from lab.shapes import cube, icosphere, quad
 from renderer import RenderOptions, render
 from renderer.raster import DEPTH_CLEAR, DEPTH_MAX
-from renderer.translucency import (DEPTH_PEELING, MODES, OIT, SORTED, blend8, composite_pixel, depth_order,
-                                   fragment_lists, half, mul8)
+from renderer.spans import whole_lanes
+from renderer.translucency import (DEPTH_PEELING, MODES, OIT, SORTED, STRIP_ROWS, batch_scratch, blend8,
+                                   composite_pixel, depth_order, fragment_lists, mul8)
 from renderer.window import SUBPIXEL
 from .single_thread import one_thread
 
@@ -48,16 +49,24 @@ def test_blend8_saturates_at_255():
     assert blend8(128, 128, 127, 255) == 191
 
 
-def test_half_rounds_as_a_16_bit_float_target():
-    """The OIT accumulators' rounding is IEEE half precision, ties to even."""
-    rng = np.random.default_rng(5)
-    halves = rng.random(3000).astype(np.float16).astype(np.float32)
-    ties = halves + np.spacing(halves.astype(np.float16)).astype(np.float32) / 2  # halfway to the next half
-    values = np.concatenate([rng.random(2000) * 4, rng.random(500) * 1e-4, rng.random(500) * 1e3, -rng.random(500),
-                             ties, [0.0, 1.0, 2049 / 2048, 1e-7, 2.0 ** -14, 2.0 ** -14 * (1 - 2.0 ** -11)]])
-    values = values.astype(np.float32)  # the kernels round float32 sums
-    ours = np.array([half(v) for v in values])
-    assert np.array_equal(ours, values.astype(np.float16).astype(np.float32))
+@pytest.mark.parametrize("width", [1, 4, 9, 14])
+def test_a_strip_of_runs_padded_to_whole_lanes_fits_its_scratch(width):
+    """Every way a row's pixels can fall in front of or behind the opaque surface (runs
+    parted by gaps), each run's points padded to whole lanes: the worst row, times the
+    strip's rows, still fits the batch scratch (runs of 4 between gaps of 1 take 8 points
+    for 5 pixels)."""
+    worst = 0
+    for mask in range(1 << width):
+        points, run = 0, 0
+        for col in range(width + 1):
+            if col < width and mask >> col & 1:
+                run += 1
+            elif run:
+                points, run = points + whole_lanes(run), 0
+        worst = max(worst, points)
+    points, _, runs = batch_scratch(width)
+    assert STRIP_ROWS * worst <= points.shape[1] and STRIP_ROWS * width <= runs.shape[0]
+    assert worst > width or width < 4  # padding does take more points than pixels
 
 
 def test_depth_order_is_nearest_first_and_stable():
