@@ -259,8 +259,6 @@ def pixel_fragment(k, row, col, plane):
     return l1, l2, pixel_depth(k, row_depth(k, row, plane), col, plane)
 
 
-"""Pixels of a span filled at a time (:func:`fill_columns`)."""
-
 WALK_ROWS = 4
 """The fewest rows of a stretch whose spans :func:`fill_rows` finds by walking the edges: setting
 up a walk costs more than it saves on fewer. Measured, one thread, the raster alone, with the

@@ -175,7 +175,14 @@ def span_pixel(consts, i, face):
 
 
 LANES = 8
-"""float32 values in one of the vector registers the span loops run in (AVX2's 256 bits)."""
+"""32-bit values (float32 colours, int32 depths) in one of the vector registers the span loops
+run in (AVX2's 256 bits)."""
+
+
+@njit(cache=True, inline="always")
+def round_up_to_lanes(count):
+    """``count`` rounded up to a multiple of :data:`LANES`."""
+    return (count + LANES - 1) & -LANES
 
 
 @njit(cache=True, inline="always")
@@ -184,7 +191,7 @@ def whole_lanes(count):
     or more: a loop over that many pixels then runs in vector steps alone, with no scalar
     tail. A shorter count is kept (a thin triangle's span of a pixel or two is not worth a
     vector register's eight: padding those made the 1,024-segment cylinder slower)."""
-    return (count + LANES - 1) & -LANES if count >= LANES // 2 else count
+    return round_up_to_lanes(count) if count >= LANES // 2 else count
 
 
 @njit(cache=True, inline="always")

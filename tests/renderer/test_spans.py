@@ -280,6 +280,13 @@ def test_textured_runs_across_triangles_and_objects_keep_the_bytes(shading):
         np.testing.assert_array_equal(render(s).rgb, fast.rgb)
 
 
+def test_a_count_rounds_up_to_whole_lanes():
+    """round_up_to_lanes: the least multiple of LANES at or above the count (0 stays 0)."""
+    from renderer.spans import LANES, round_up_to_lanes
+
+    assert [round_up_to_lanes(n) for n in (0, 1, LANES - 1, LANES, LANES + 1)] == [0, LANES, LANES, LANES, 2 * LANES]
+
+
 def test_a_span_of_half_a_vector_or_more_is_worked_out_in_whole_vectors():
     """whole_lanes: counts of LANES/2 and more round up to whole vector registers (the points
     past a span's end are the next span's, written over next; the row scratch has room past

@@ -12,7 +12,8 @@ import pytest
 
 from renderer.bands import BLOCK_ROWS
 from renderer.jit import njit
-from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, SPAN_LANES, clear_band, depth_bits,
+from renderer.spans import LANES
+from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, clear_band, depth_bits,
                                         depth_to_window, fill_columns, finish_band)
 
 
@@ -38,7 +39,7 @@ def plain_fill(row, first, last, z_row, zx, ax, kk, depth, tri_index):
             depth[row, col], tri_index[row, col] = z, kk
 
 
-@pytest.mark.parametrize("width", [3, SPAN_LANES, 13, 21])
+@pytest.mark.parametrize("width", [3, LANES, 13, 21])
 def test_a_span_is_tested_in_whole_lanes_as_pixel_by_pixel(width):
     """Every span of every length and place on a row, the last pixel included (a span's
     lanes that would pass the row's end are taken to the left of it; a row narrower than
@@ -61,8 +62,9 @@ _EVERY_SPAN_AS_PYTHON = """
 import numba
 import numpy as np
 assert numba.config.DISABLE_JIT
-from renderer.visibility_buffer import SPAN_LANES, fill_columns
-for width in (3, SPAN_LANES, 13):
+from renderer.spans import LANES
+from renderer.visibility_buffer import fill_columns
+for width in (3, LANES, 13):
     for first in range(width):
         for last in range(first, width):
             depth, tri_index = np.full((1, width), 1 << 23, np.int32), np.zeros((1, width), np.int32)
