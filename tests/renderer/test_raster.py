@@ -579,15 +579,33 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     assert (rows[:, 1] - rows[:, 0] + 1).mean() >= TALL_ROWS
 
 
-def test_the_set_up_of_a_chunk_is_compiled_once():
+_SET_UP_WITH_A_COLD_CACHE = """
+import numpy as np
+from renderer.raster import SETUP_CHUNK, set_up, set_up_range
+from renderer.window import SUBPIXEL
+rng = np.random.default_rng(8)
+fixed = rng.integers(0, 20 * SUBPIXEL, (int(SETUP_CHUNK) + 5, 3, 2))
+window = np.concatenate([fixed / SUBPIXEL + 0.5, rng.uniform(0, 1, (len(fixed), 3, 1))], axis=2)
+setup = set_up(fixed, window, 20, False)
+assert (setup.rows[:, 0] <= setup.rows[:, 1]).any()
+print(len(set_up_range.signatures))
+"""
+
+
+def test_the_set_up_of_a_chunk_is_compiled_once(tmp_path):
     """setup_triangles calls set_up_range from its parallel loop, which numba types twice (the
     loop, then the loop body as a function of its own): the chunk's bounds have one type in
-    both, so the set-up is compiled once, not twice (0.7 s of a cold start)."""
-    from renderer.raster import SETUP_CHUNK, set_up, set_up_range
+    both, so the set-up is compiled once, not twice (0.7 s of a cold start). In a process of
+    its own with an empty kernel cache: a kernel loaded from the cache compiles nothing."""
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
 
-    rng = np.random.default_rng(8)
-    fixed = rng.integers(0, 20 * SUBPIXEL, (int(SETUP_CHUNK) + 5, 3, 2))
-    window = np.concatenate([fixed / SUBPIXEL + 0.5, rng.uniform(0, 1, (len(fixed), 3, 1))], axis=2)
-    setup = set_up(fixed, window, 20, False)
-    assert (setup.rows[:, 0] <= setup.rows[:, 1]).any()
-    assert len(set_up_range.signatures) == 1
+    repo = Path(__file__).resolve().parents[2]
+    env = dict(os.environ, SCANLAB_KERNEL_CACHE=str(tmp_path),
+               PYTHONPATH=os.pathsep.join([str(repo), os.environ.get("PYTHONPATH", "")]))
+    done = subprocess.run([sys.executable, "-c", _SET_UP_WITH_A_COLD_CACHE], cwd=repo, env=env, capture_output=True,
+                          text=True, timeout=600)
+    assert done.returncode == 0, done.stderr[-3000:]
+    assert done.stdout.split()[-1] == "1"
