@@ -20,7 +20,8 @@ source vertices' attributes mixed by its clipping weights). Screen-linear interp
 takes ``w_i = 1``.
 
 **Span table.** Everything a span's set-up reads that does not depend on the row is
-gathered once a frame per clipped triangle, in draw order, into :class:`SpanTable`
+gathered once a frame per clipped triangle, in the order ``tri_index`` numbers them (for the
+lean path, the order the rows first show them: :mod:`renderer.visible`), into :class:`SpanTable`
 (:func:`span_table`): two rows of two tables instead of a chain of lookups (clipped
 triangle → source triangle → its vertices → their positions and normals), each of which
 missed the cache on a large mesh, where a triangle has one or two spans. The values are
@@ -39,7 +40,8 @@ F0, F1 = np.float32(0.0), np.float32(1.0)
 
 
 class SpanTable(NamedTuple):
-    """Per clipped triangle ``k`` (draw order), what each of its spans starts from (:func:`span_table`).
+    """Per clipped triangle ``k`` (as ``tri_index`` numbers them), what each of its spans starts
+    from (:func:`span_table`).
 
     weights (K, 11) float64: ``anchor, px, y0, e1x, e1y, e2x, e2y, inv_a2, iw0, iw1, iw2`` —
     the anchor column (floor of the first vertex's x), the anchor pixel's centre counted

@@ -1,4 +1,4 @@
-"""Between raster and shading: the triangles that won a pixel, renumbered in draw order."""
+"""Between raster and shading: the triangles that won a pixel, renumbered in the order the rows show them."""
 import numpy as np
 import pytest
 
@@ -6,12 +6,13 @@ from renderer.raster import EMPTY
 from renderer.visible import visible_triangles
 
 
-def test_the_winners_keep_their_order_and_pixels_keep_their_triangle():
-    """Triangles 2 and 7 of 9 won pixels: they become 0 and 1, empty pixels stay empty."""
-    tri_index = np.array([[7, EMPTY, 7], [2, 2, EMPTY]], np.int32)
+def test_the_winners_are_numbered_as_the_rows_first_show_them():
+    """Triangles 7, 2 and 4 of 9 won pixels: row 0 shows 7 first, then row 1 shows 2 and 4,
+    so they become 0, 1 and 2; empty pixels stay empty."""
+    tri_index = np.array([[EMPTY, 7, 7], [2, 7, 4]], np.int32)
     ids = visible_triangles(tri_index, 9)
-    assert ids.tolist() == [2, 7]
-    assert tri_index.tolist() == [[1, EMPTY, 1], [0, 0, EMPTY]]
+    assert ids.tolist() == [7, 2, 4]
+    assert tri_index.tolist() == [[EMPTY, 0, 0], [1, 0, 2]]
 
 
 def test_an_empty_image_has_no_winners():
@@ -21,16 +22,18 @@ def test_an_empty_image_has_no_winners():
 
 
 @pytest.mark.parametrize("seed", range(3))
-def test_renumbering_is_a_bijection_that_keeps_order(seed):
+def test_renumbering_is_a_bijection_in_the_order_of_first_sight(seed):
     """Random visibility buffers: each pixel names the same triangle through the winners'
-    list, the winners are exactly the triangles on screen, sorted, and pixels showing the
-    same triangle still show the same number (the spans of shading are unchanged)."""
+    list, the winners are exactly the triangles on screen, each listed where the rows first
+    show it, and pixels showing the same triangle still show the same number (the spans of
+    shading are unchanged)."""
     rng = np.random.default_rng(seed)
     before = rng.integers(-1, 5000, (61, 97)).astype(np.int32)
     before[rng.uniform(size=before.shape) < 0.3] = EMPTY
     after = before.copy()
     ids = visible_triangles(after, 5000)
-    assert ids.tolist() == sorted(set(before[before >= 0].tolist()))
+    shown = before[before >= 0]
+    assert ids.tolist() == shown[np.sort(np.unique(shown, return_index=True)[1])].tolist()
     np.testing.assert_array_equal(after == EMPTY, before == EMPTY)
     np.testing.assert_array_equal(ids[after[after >= 0]], before[before >= 0])
     np.testing.assert_array_equal(after[:, 1:] == after[:, :-1], before[:, 1:] == before[:, :-1])
