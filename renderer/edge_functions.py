@@ -40,11 +40,12 @@ from renderer.window import SUBPIXEL, SUBPIXEL_BITS
 
 @njit(cache=True, inline="always")
 def lanes_start(f, width):
-    """The first column of the one group of :data:`~renderer.spans.LANES` columns that holds
-    every pixel of the counter-clockwise fixed-point triangle ``f`` (3, 2) in an image
-    ``width`` wide, or −1 when there is none: its bounding box (clamped to the image) is
-    wider than the lanes, or the image is narrower. The group starts at the box's first
-    column, moved left where it would pass the row's end."""
+    """The one group of lanes that holds every pixel of the counter-clockwise fixed-point
+    triangle ``f`` (3, 2) in an image ``width`` wide, as ``(start, lanes)``: its first column
+    and its width, the box's columns (clamped to the image) rounded up to whole
+    :data:`~renderer.spans.LANES` (0 or less: no column of pixel centres). The group starts at
+    the box's first column, moved left where it would pass the row's end. ``(−1, 0)`` when
+    there is none: the box is wider than the lanes, or the image is narrower."""
     x_min = smaller(smaller(f[0, 0], f[1, 0]), f[2, 0])
     x_max = larger(larger(f[0, 0], f[1, 0]), f[2, 0])
     first = larger(-((-x_min) >> SUBPIXEL_BITS), 0)  # ⌈x_min / 256⌉: the first pixel centre at or right of it
@@ -82,11 +83,11 @@ def edge_function(f, e, col, row, top_left):
 def fill_narrow_rows(f, columns, lo, hi, plane, kk, top_left, depth_test, depth, tri_index):
     """Fill rows ``lo … hi`` of a triangle at most :data:`~renderer.spans.LANES` columns wide
     (``f`` (3, 2), counter-clockwise fixed-point corners; ``columns`` its group of lanes,
-    ``(start, lanes)`` from :func:`lanes_start`), numbered ``kk`` in the visibility buffer, whose set-up row is
-    ``plane`` (11,) (:class:`renderer.raster.TriangleSetup`): on each row, the 8 pixels
-    inside all three edges (:func:`edge_function`) whose depth passes the test (LEQUAL; every
-    one inside without ``depth_test``) take the triangle's depth and number; the others keep
-    their old values."""
+    ``(start, lanes)`` from :func:`lanes_start`), numbered ``kk`` in the visibility buffer,
+    whose set-up row is ``plane`` (11,) (:class:`renderer.raster.TriangleSetup`): on each
+    row, the group's pixels inside all three edges (:func:`edge_function`) whose depth
+    passes the test (LEQUAL; every one inside without ``depth_test``) take the triangle's
+    depth and number; the others keep their old values."""
     start, lanes = columns
     e0, c0, r0, bar0 = edge_function(f, 0, start, lo, top_left)
     e1, c1, r1, bar1 = edge_function(f, 1, start, lo, top_left)
