@@ -416,7 +416,7 @@ window depth and coverage, :func:`finish_band`), or both."""
 
 
 @njit(cache=True, parallel=True)
-def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, window_depth, covered):
+def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, covered):
     """Scan-convert every triangle of ``setup`` into the visibility buffer (the loop kernel).
 
     The image's rows are dealt out to ``n_bands`` bands in blocks of
@@ -425,8 +425,7 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_in
     first batch: ``ends`` has :data:`FIRST_BATCH`). A pixel belongs to one band and sees the
     triangles in draw order, so the result is the same, bit for bit, as a serial loop
     (z-buffer ties included). After the last batch (:data:`LAST_BATCH`) each band writes its
-    rows' window depth and coverage into ``window_depth`` (H, W) float64 and ``covered``
-    (H, W) bool (:func:`renderer.visibility_buffer.finish_band`). ``depth_test`` False draws
+    rows' coverage into ``covered`` (H, W) bool (:func:`renderer.visibility_buffer.finish_band`). ``depth_test`` False draws
     every fragment over what is there (the painter's algorithm, or no hidden-surface removal
     at all): then the last triangle drawn wins.
     ``first_index`` is the number of the setup's first triangle in ``tri_index`` (the
@@ -443,18 +442,18 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_in
         band_dividing(np.int64(b), setup, n_bands, rule, depth_test, first_index, (ends & FIRST_BATCH) != 0, depth,
                       tri_index)
         if ends & LAST_BATCH:
-            finish_band(np.int64(b), n_bands, BLOCK_ROWS, depth, tri_index, window_depth, covered)
+            finish_band(np.int64(b), n_bands, BLOCK_ROWS, tri_index, covered)
 
 
 @njit(cache=True, parallel=True)
-def rasterize_walking(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, window_depth, covered):
+def rasterize_walking(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, covered):
     """:func:`rasterize`, each span found by walking the triangle's edges (:func:`fill_rows`):
     the same pixels, quicker for tall triangles (:func:`is_tall`)."""
     for b in prange(n_bands):
         band_walking(np.int64(b), setup, n_bands, rule, depth_test, first_index, (ends & FIRST_BATCH) != 0, depth,
                      tri_index)
         if ends & LAST_BATCH:
-            finish_band(np.int64(b), n_bands, WALK_BLOCK_ROWS, depth, tri_index, window_depth, covered)
+            finish_band(np.int64(b), n_bands, WALK_BLOCK_ROWS, tri_index, covered)
 
 
 @njit(cache=True, parallel=True)
@@ -531,13 +530,13 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     The triangles (:class:`IndexedTriangles`) are drawn in order, ``batch`` at a time (None:
     all at once): each batch is set up (:func:`setup_triangles`) and filled
     (:func:`rasterize`) over what the batches before it left, so the buffer is the one a
-    single pass over all of them fills. With a workspace ``ws`` every array lives in it.
+    single pass over all of them fills. With a workspace ``ws`` every array but the frame's
+    (depth and coverage, fresh each time) lives in it.
     ``n_bands`` defaults to two per thread (:func:`renderer.bands.raster_bands`);
     ``depth_test=False`` turns the z-buffer test off; ``cull_back=True`` drops back-facing triangles.
     """
-    depth = empty(ws, "raster.depth", (height, width), np.int32)
+    depth, covered = np.empty((height, width), np.int32), np.empty((height, width), np.bool_)  # the frame's
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)
-    window_depth, covered = np.empty((height, width)), np.empty((height, width), np.bool_)
     bands, rule, count = raster_bands(height, n_bands), FILL_RULES[fill_rule], triangles.count
     step = max(count, 1) if batch is None else int(batch)
     for a in range(0, max(count, 1), step):
@@ -546,8 +545,8 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
         with one_band_at_a_time():
             kernel = rasterize_walking if is_tall(setup) else rasterize
             ends = (FIRST_BATCH if a == 0 else 0) | (LAST_BATCH if a + step >= count else 0)
-            kernel(setup, bands, rule, bool(depth_test), a, ends, depth, tri_index, window_depth, covered)
-    return Visibility(depth, tri_index, window_depth, covered)
+            kernel(setup, bands, rule, bool(depth_test), a, ends, depth, tri_index, covered)
+    return Visibility(depth, tri_index, covered)
 
 
 def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: int, height: int,

@@ -4,7 +4,7 @@ Window rows (y up), as :mod:`renderer.raster` fills them. The depth is an intege
 depth 0..1 times 2²⁴ − 1, rounded (:func:`depth_bits`), as in a 24-bit OpenGL depth buffer,
 so equal depths compare equal and the z-buffer test is exact. Each of the raster's bands
 clears its own rows before the first batch of triangles (:func:`clear_band`) and, after the
-last, writes out their window depth and coverage for the frame (:func:`finish_band`); a
+last, writes out their coverage for the frame (:func:`finish_band`); a
 band's rows are dealt as :mod:`renderer.bands` says. A triangle's span on a row is written
 into it by :func:`fill_columns`, the z-buffer test.
 """
@@ -104,30 +104,28 @@ def clear_band(b, n_bands, block_rows, depth, tri_index):
 
 
 @njit(cache=True, from_python=False, refcounts=False)
-def finish_band(b, n_bands, block_rows, depth, tri_index, window_depth, covered):
+def finish_band(b, n_bands, block_rows, tri_index, covered):
     """Band ``b``'s rows of the finished visibility buffer (blocks of ``block_rows`` rows, as
-    :func:`clear_band`) as the frame's depth and coverage: ``window_depth`` = depth / (2²⁴ − 1)
-    as float64 (:func:`depth_to_window`), ``covered`` = tri_index ≠ :data:`EMPTY`. Done by the
-    band that drew the rows, after the last batch, while they are still in its cache (a
-    parallel pass of its own cost 0.4–0.8 ms a 1024² frame, and 0.4 s of compile on a cold start)."""
-    height, width = depth.shape
+    :func:`clear_band`) as the frame's coverage: ``covered`` = tri_index ≠ :data:`EMPTY`. Done by
+    the band that drew the rows, after the last batch, while they are still in its cache (a
+    parallel pass of its own cost 0.4–0.8 ms a 1024² frame, and 0.4 s of compile on a cold start).
+    The frame's window depth is not written here: the frame keeps the integer depth and
+    divides it only if someone reads it (:func:`depth_to_window`, :class:`lab.frame.Frame`)."""
+    height, width = tri_index.shape
     for block in range(b, (height + block_rows - 1) // block_rows, n_bands):
         for row in range(block * block_rows, smaller(block * block_rows + block_rows, height)):
             for col in range(width):
-                window_depth[row, col] = depth[row, col] / DEPTH_MAX
                 covered[row, col] = tri_index[row, col] != EMPTY
 
 
 class Visibility(NamedTuple):
     """The opaque pass's visibility buffer (window rows, y up): ``depth`` (H, W) int32, the
-    24-bit integer depth (:data:`DEPTH_CLEAR` where empty); ``tri_index`` (H, W) int32, the
-    triangle that won each pixel (:data:`EMPTY` where none); and from them, for the frame,
-    ``window_depth`` (H, W) float64 (:func:`depth_to_window`, 1.0 where empty) and
-    ``covered`` (H, W) bool (tri_index ≠ EMPTY), fresh arrays (not the workspace's)."""
+    24-bit integer depth (:data:`DEPTH_CLEAR` where empty), a fresh array (the frame keeps
+    it); ``tri_index`` (H, W) int32, the triangle that won each pixel (:data:`EMPTY` where
+    none), the workspace's; and ``covered`` (H, W) bool (tri_index ≠ EMPTY), a fresh array."""
 
     depth: np.ndarray
     tri_index: np.ndarray
-    window_depth: np.ndarray
     covered: np.ndarray
 
 

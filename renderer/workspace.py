@@ -6,8 +6,8 @@ operating system hands out new pages, and each is faulted in on first touch. A
 :func:`renderer.render` keeps one per thread; everything it returns is copied out, so a
 :class:`~lab.frame.Frame` never shares memory with the workspace.
 
-What a frame returns is new memory each time (a 1024² frame: rgb 3 MB, depth 8 MB,
-coverage 1 MB). glibc's ``malloc`` serves blocks that large with a fresh ``mmap`` and gives
+What a frame returns is new memory each time (a 1024² frame: rgb 3 MB, the integer depth
+4 MB, divided into 8 MB of float64 only if read, coverage 1 MB). glibc's ``malloc`` serves blocks that large with a fresh ``mmap`` and gives
 the top of its heap back to the system once more than a threshold of it is free; both
 thresholds move as the process runs, so whether the next frame's outputs get pages faulted
 in afresh depended on what the process did before (measured in ``scanlab bench``, VTK's

@@ -4,6 +4,7 @@ import json
 import os
 import subprocess
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -105,6 +106,19 @@ def test_rendering_twice_gives_identical_bytes():
     assert a.coverage.tobytes() == b.coverage.tobytes()
     c, d = render(load_scene("cube")), render(load_scene("cube"))
     assert c.rgb.tobytes() == d.rgb.tobytes() and c.depth.tobytes() == d.depth.tobytes()
+
+
+def test_a_frames_depth_read_after_later_frames_is_still_its_own():
+    """The frame keeps its integer depth and divides it when first read: read after two other
+    scenes of the same size were drawn, it is the depth of its own scene (no memory shared
+    with the next frame's buffers), and it is made once."""
+    cube, sphere = load_scene("cube"), load_scene("icosphere:level=2")
+    sphere = replace(sphere, image=replace(sphere.image, size=cube.image.size))
+    read_at_once = render(cube).depth.copy()
+    first = render(cube)
+    render(sphere), render(sphere)
+    assert first.depth.tobytes() == read_at_once.tobytes() and first.depth is first.depth
+    assert (first.depth < 1.0).sum() != (render(sphere).depth < 1.0).sum()  # really another picture
 
 
 _PLAIN_PYTHON_RENDER = """

@@ -492,11 +492,11 @@ def test_integer_z_buffer_matches_a_float_z_buffer_on_overlapping_triangles():
 @pytest.mark.parametrize("tall", [False, True], ids=["dividing", "walking"])
 @pytest.mark.parametrize("batch", [None, 7, 1])
 @pytest.mark.parametrize("n_bands", [1, 3])
-def test_the_frame_depth_and_coverage_are_the_finished_buffer_divided_and_compared(tall, batch, n_bands):
-    """Window depth q / (2²⁴ − 1) in float64 and coverage tri_index ≠ EMPTY, as numpy writes
-    them from the finished buffer: written by each band after the last batch only, on every
-    row (the empty ones, and the last block cut short: 3 bands of 16- or 64-row blocks over
-    71 rows), by the dividing and the walking kernel."""
+def test_the_frame_coverage_is_the_finished_buffer_compared(tall, batch, n_bands):
+    """Coverage tri_index ≠ EMPTY, as numpy writes it from the finished buffer: written by
+    each band after the last batch only, on every row (the empty ones, and the last block
+    cut short: 3 bands of 16- or 64-row blocks over 71 rows), by the dividing and the walking
+    kernel; the depth of empty pixels is the clear value, window depth 1.0."""
     from renderer.raster import EMPTY, depth_to_window, rasterize_visibility, whole_triangles
 
     width, height = 23, 71
@@ -511,17 +511,16 @@ def test_the_frame_depth_and_coverage_are_the_finished_buffer_divided_and_compar
     vis = rasterize_visibility(whole_triangles(fixed, window), width, height, n_bands=n_bands, batch=batch)
     covered_rows = (vis.tri_index != EMPTY).any(axis=1)
     assert covered_rows.any() and (tall or not covered_rows.all())
-    np.testing.assert_array_equal(vis.window_depth, depth_to_window(vis.depth))
     np.testing.assert_array_equal(vis.covered, vis.tri_index != EMPTY)
-    assert (vis.window_depth[vis.tri_index == EMPTY] == 1.0).all()
+    assert (depth_to_window(vis.depth)[vis.tri_index == EMPTY] == 1.0).all()
 
 
 def test_an_empty_scene_has_an_empty_frame_depth_and_coverage():
     """No triangles: one pass clears the buffer and finishes it, depth 1.0 and nothing covered."""
-    from renderer.raster import rasterize_visibility, whole_triangles
+    from renderer.raster import depth_to_window, rasterize_visibility, whole_triangles
 
     vis = rasterize_visibility(whole_triangles(np.zeros((0, 3, 2), np.int64), np.zeros((0, 3, 3))), 9, 5)
-    assert (vis.window_depth == 1.0).all() and not vis.covered.any()
+    assert (depth_to_window(vis.depth) == 1.0).all() and not vis.covered.any()
 # --------------------------------------------------------------------------- the walking kernel
 def test_tall_thin_triangles_are_drawn_as_the_reference_draws_them():
     """Triangles tall enough to be walked (the fast path of fill_rows), beside short ones that
@@ -566,9 +565,9 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     buffers = []
     for kernel in (rasterize, rasterize_walking):
         depth, tri_index = np.empty((height, width), np.int32), np.empty((height, width), np.int32)
-        window_depth, covered = np.empty((height, width)), np.empty((height, width), np.bool_)
+        covered = np.empty((height, width), np.bool_)
         kernel(setup, raster_bands(height, 3), FILL_RULES[rule], depth_test, 0, FIRST_BATCH | LAST_BATCH, depth,
-               tri_index, window_depth, covered)
+               tri_index, covered)
         buffers.append((depth, tri_index))
     np.testing.assert_array_equal(buffers[1][1], buffers[0][1])
     np.testing.assert_array_equal(buffers[1][0], buffers[0][0])
