@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from functools import partial
+from itertools import accumulate
 from typing import NamedTuple
 
 import numpy as np
@@ -195,8 +196,7 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
     objects = scene.objects
     n_points = [obj.mesh.n_points for obj in objects]
     n_triangles = [obj.mesh.n_triangles for obj in objects]
-    starts = np.concatenate([[0], np.cumsum(n_points)]).astype(np.int64)
-    firsts = np.concatenate([[0], np.cumsum(n_triangles)]).astype(np.int64)
+    starts, firsts = np.array([0, *accumulate(n_points)], np.int64), np.array([0, *accumulate(n_triangles)], np.int64)
     n, t = int(starts[-1]), int(firsts[-1])
     verts_view, verts_clip = empty(ws, "geometry.verts_view", (n, 3)), empty(ws, "geometry.verts_clip", (n, 4))
     codes = empty(ws, "geometry.outcodes", n, np.uint8)

@@ -77,7 +77,7 @@ def texture_table(scene) -> Textures:
             chunks.append(texel_lanes(t))
             start += h * w
     if not chunks:
-        texels = pack_lanes(np.full((1, 3), 255, np.uint8))
+        texels = _WHITE
     else:
         texels = chunks[0] if len(chunks) == 1 else np.concatenate(chunks)
     as_int = lambda v: np.array(v, np.int64)  # noqa: E731
@@ -95,6 +95,11 @@ def pack_lanes(texels_8bit: np.ndarray) -> np.ndarray:
     """(…, 3) uint8 texels → (N,) uint64: r in bits 0–7, g in 16–23, b in 32–39."""
     t = np.asarray(texels_8bit, np.uint8).reshape(-1, 3).astype(np.uint64)
     return t[:, 0] | (t[:, 1] << np.uint64(LANE)) | (t[:, 2] << np.uint64(2 * LANE))
+
+
+_WHITE = pack_lanes(np.full((1, 3), 255, np.uint8))
+"""The table of a scene without textures: one white texel, which no kernel samples (left writeable:
+numba types a read-only array apart, and would compile the shading kernels again for it)."""
 
 
 def texel_lanes(texture) -> np.ndarray:

@@ -31,7 +31,8 @@ PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, FACE_COLOUR, VERTEX_COLOUR, PIXEL_AS_GIVEN =
 def any_flat(materials) -> bool:
     """True when some object is shaded flat (:data:`PIXEL_FACE_NORMAL` or :data:`FACE_COLOUR`):
     only such a frame reads its triangles' plane normals and holds colours per triangle."""
-    return bool(np.isin(materials.shading_path, (PIXEL_FACE_NORMAL, FACE_COLOUR)).any())
+    path = materials.shading_path
+    return bool(((path == PIXEL_FACE_NORMAL) | (path == FACE_COLOUR)).any())
 
 
 def any_face_colour(materials) -> bool:

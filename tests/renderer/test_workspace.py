@@ -22,6 +22,13 @@ def test_an_array_is_reused_while_it_fits_and_replaced_when_it_does_not():
     assert ws.array("other", 3).shape == (3,) and empty(None, "x", (2, 2)).shape == (2, 2)
 
 
+def test_a_shape_may_be_an_int_a_tuple_a_list_or_numbers_from_numpy():
+    ws = Workspace()
+    assert ws.array("a", np.int64(4), np.uint8).shape == (4,) and ws.array("b", 0).shape == (0,)
+    assert ws.array("c", [2, np.int32(3)]).shape == (2, 3) and ws.array("d", np.array([3, 2])).shape == (3, 2)
+    assert ws.array("e", (np.int64(5), 1), np.int64).dtype == np.int64
+
+
 FRAMES = """
 import json, resource, sys, numpy as np
 if sys.argv[1] == "renderer":
