@@ -137,12 +137,19 @@ def oit_add(sum_r, sum_g, sum_b, weight, transmit, r, g, b, a):
 def oit_resolve(sum_r, sum_g, sum_b, weight, transmit, behind, out):
     """The ``oit`` buffers of one pixel composited over the 8-bit ``behind`` into the 8-bit
     ``out``: ``C = Σαc / max(Σα, 0.01)`` with coverage ``A = 1 − T``, ``C`` converted to 8 bits
-    and blended ``C·A + behind·(1 − A)`` in 8-bit arithmetic."""
-    a8 = unorm8(F32_ONE - transmit)
+    (:func:`oit_colour8`) and blended ``C·A + behind·(1 − A)`` in 8-bit arithmetic."""
+    r8, g8, b8, a8 = oit_colour8(sum_r, sum_g, sum_b, weight, transmit)
+    out[0] = blend8(r8, a8, behind[0], 255 - a8)
+    out[1] = blend8(g8, a8, behind[1], 255 - a8)
+    out[2] = blend8(b8, a8, behind[2], 255 - a8)
+
+
+@njit(cache=True, inline="always")
+def oit_colour8(sum_r, sum_g, sum_b, weight, transmit):
+    """The ``oit`` buffers of one pixel as 8 bits: the average colour ``Σαc / max(Σα, 0.01)``
+    and the coverage ``1 − T``, ``(r, g, b, a)``. Clear buffers (sums 0, T = 1) give coverage 0."""
     w = larger(weight, np.float32(0.01))
-    out[0] = blend8(unorm8(sum_r / w), a8, behind[0], 255 - a8)
-    out[1] = blend8(unorm8(sum_g / w), a8, behind[1], 255 - a8)
-    out[2] = blend8(unorm8(sum_b / w), a8, behind[2], 255 - a8)
+    return unorm8(sum_r / w), unorm8(sum_g / w), unorm8(sum_b / w), unorm8(F32_ONE - transmit)
 
 
 @njit(cache=True, inline="always")
@@ -322,14 +329,26 @@ def emit_run(colour, first, a, row, c0, count, seen, start, colours, sums):
 
 
 @njit(cache=True, inline="always")
-def resolve_oit_row(sums, seen, row, rgb, behind, out):
-    """Every pixel of ``row`` that got a fragment: its ``oit`` buffers over ``rgb`` (:func:`oit_resolve`)."""
+def resolve_oit_row(sums, seen, row, rgb, eight):
+    """Every pixel of ``row`` that got a fragment: its ``oit`` buffers over ``rgb`` (as
+    :func:`oit_resolve`), in two loops. The first works out every pixel's 8-bit colour and
+    coverage (:func:`oit_colour8`) into ``eight`` (4, ≥ W) uint8 with no branch, eight pixels
+    at a time (a pixel without fragments reads clear buffers, not the stale ones); the
+    second blends those that got a fragment over ``rgb``, in 8-bit integers. In one loop,
+    the divisions and conversions ran one pixel at a time: 14 % of a translucent-three frame."""
+    for col in range(seen.shape[1]):
+        j = np.uint64(col)  # unsigned: no wrap-around, the loop vectorises
+        shown = seen[row, j] > 0
+        eight[0, j], eight[1, j], eight[2, j], eight[3, j] = oit_colour8(
+            sums[SUM_R, row, j] if shown else F32_ZERO, sums[SUM_G, row, j] if shown else F32_ZERO,
+            sums[SUM_B, row, j] if shown else F32_ZERO, sums[WEIGHT, row, j] if shown else F32_ZERO,
+            sums[TRANSMIT, row, j] if shown else F32_ONE)
     for col in range(seen.shape[1]):
         if seen[row, col] > 0:
-            behind[0], behind[1], behind[2] = rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2]
-            oit_resolve(sums[SUM_R, row, col], sums[SUM_G, row, col], sums[SUM_B, row, col], sums[WEIGHT, row, col],
-                        sums[TRANSMIT, row, col], behind, out)
-            rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = out[0], out[1], out[2]
+            a8 = eight[3, col]
+            rgb[row, col, 0] = blend8(eight[0, col], a8, rgb[row, col, 0], 255 - a8)
+            rgb[row, col, 1] = blend8(eight[1, col], a8, rgb[row, col, 1], 255 - a8)
+            rgb[row, col, 2] = blend8(eight[2, col], a8, rgb[row, col, 2], 255 - a8)
 
 
 @njit(cache=True, inline="always")
@@ -412,8 +431,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
         scratch = span_scratch(width)  # a run's points, linear colours and texture coordinates
         colour = scratch[1]
         run_points, run_colours, runs = batch_scratch(width)  # a triangle's runs on a strip
-        behind = np.empty(3, np.int64)
-        out = np.empty(3, np.int64)
+        eight = np.empty((4, width), np.uint8)  # a row's resolved oit colours (resolve_oit_row)
         nearest = np.empty(STRIP_ROWS, np.int32)  # the nearest opaque depth of each of the strip's rows
         for strip in range(b, n_strips, n_bands):
             lo, hi = strip * STRIP_ROWS, smaller(strip * STRIP_ROWS + STRIP_ROWS, height) - 1
@@ -464,7 +482,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                         first += whole_lanes(count)
             if not fill:
                 for row in range(lo, hi + 1):
-                    resolve_oit_row(sums, seen, row, rgb, behind, out)
+                    resolve_oit_row(sums, seen, row, rgb, eight)
 
 
 @njit(cache=True, parallel=True)
