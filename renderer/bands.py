@@ -10,7 +10,7 @@ filling the lower half landed on one thread and the sky on the other (measured: 
 A pixel belongs to exactly one band and each band works through its rows in order, so the
 number of bands never changes a byte: a test renders with one band and with many.
 How many bands pay depends on the loop: the scan-conversion loops walk every triangle once
-per band (:func:`raster_bands`: two per thread, one for a dense mesh), shading has no such cost
+per band (:func:`raster_bands`: two per thread), shading has no such cost
 (:data:`SHADING_BANDS`).
 
 The opaque raster deals **blocks** of :data:`BLOCK_ROWS` rows instead of single rows
@@ -20,8 +20,6 @@ threads set up nearly every triangle of a 672k-triangle Menger sponge again (mea
 thread: 147 ms a frame with one band, 156 with two, 182 with four).
 """
 from __future__ import annotations
-
-import math
 
 import numba
 
@@ -37,24 +35,11 @@ SHADING_BANDS = 64
 """Bands for the shading loops: many, so that two threads get even shares of costly rows."""
 
 
-DENSE_PIXELS = 16
-"""Pixels per triangle below which a mesh is **dense** for the scan-conversion loops: then
-they deal one band per thread instead of two (:func:`raster_bands`)."""
-
-
-def raster_bands(height: int, n_bands: int | None = None, pixels_per_triangle: float = math.inf) -> int:
+def raster_bands(height: int, n_bands: int | None = None) -> int:
     """Bands for a scan-conversion loop over ``height`` rows: ``n_bands``, by default two per
-    thread, or one per thread for a dense mesh (fewer than :data:`DENSE_PIXELS` pixels per
-    triangle); at least 1 and at most one per row.
-
-    Each band walks every triangle, so a band costs its pass over the triangle list; a second
-    band per thread lets a thread that comes free take work from a slow one. Measured, two
-    threads, whole frames, two bands against four: a level-4 Menger sponge at 1024² (1.5
-    pixels a triangle) 62–64 against 66–70 ms, the 1.07M-triangle Igea 95–100 against
-    93–104; the level-5 icosphere at 1024² (51 pixels a triangle) 12.5–12.7 against
-    12.3–12.4 ms, where the pass is short and the balance pays."""
+    thread, at least 1 and at most one per row."""
     if n_bands is None:
-        n_bands = numba.get_num_threads() * (1 if pixels_per_triangle < DENSE_PIXELS else 2)
+        n_bands = 2 * numba.get_num_threads()
     return max(1, min(int(n_bands), height))
 
 

@@ -532,13 +532,12 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     (:func:`rasterize`) over what the batches before it left, so the buffer is the one a
     single pass over all of them fills. With a workspace ``ws`` every array but the frame's
     (depth and coverage, fresh each time) lives in it.
-    ``n_bands`` defaults to two per thread, one for a dense mesh (:func:`renderer.bands.raster_bands`);
+    ``n_bands`` defaults to two per thread (:func:`renderer.bands.raster_bands`);
     ``depth_test=False`` turns the z-buffer test off; ``cull_back=True`` drops back-facing triangles.
     """
     depth, covered = np.empty((height, width), np.int32), np.empty((height, width), np.bool_)  # the frame's
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)
-    rule, count = FILL_RULES[fill_rule], triangles.count
-    bands = raster_bands(height, n_bands, width * height / max(count, 1))
+    bands, rule, count = raster_bands(height, n_bands), FILL_RULES[fill_rule], triangles.count
     step = max(count, 1) if batch is None else int(batch)
     for a in range(0, max(count, 1), step):
         rows = np.ascontiguousarray(triangles.corners(a, min(a + step, count)), dtype=np.int64)

@@ -3,7 +3,7 @@ and how many bands a loop uses."""
 import numba
 import pytest
 
-from renderer.bands import BLOCK_ROWS, DENSE_PIXELS, SHADING_BANDS, band_offset, first_block_of_band, first_row_of_band, raster_bands, shading_bands
+from renderer.bands import BLOCK_ROWS, SHADING_BANDS, band_offset, first_block_of_band, first_row_of_band, raster_bands, shading_bands
 
 
 @pytest.mark.parametrize("lo, band, n_bands, first", [(0, 0, 4, 0), (0, 3, 4, 3), (5, 2, 4, 6), (5, 1, 4, 5),
@@ -29,8 +29,6 @@ def test_every_row_goes_to_exactly_one_band():
 
 def test_raster_bands_default_to_two_per_thread_and_never_exceed_the_rows():
     assert raster_bands(10_000) == 2 * numba.get_num_threads()
-    assert raster_bands(10_000, pixels_per_triangle=DENSE_PIXELS) == 2 * numba.get_num_threads()
-    assert raster_bands(10_000, pixels_per_triangle=DENSE_PIXELS - 0.5) == numba.get_num_threads()  # a dense mesh
     assert raster_bands(3, 8) == 3 and raster_bands(100, 5) == 5 and raster_bands(0, 5) == 1
 
 
