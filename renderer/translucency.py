@@ -139,9 +139,7 @@ def oit_resolve(sum_r, sum_g, sum_b, weight, transmit, behind, out):
     ``out``: ``C = Σαc / max(Σα, 0.01)`` with coverage ``A = 1 − T``, ``C`` converted to 8 bits
     (:func:`oit_colour8`) and blended ``C·A + behind·(1 − A)`` in 8-bit arithmetic."""
     r8, g8, b8, a8 = oit_colour8(sum_r, sum_g, sum_b, weight, transmit)
-    out[0] = blend8(r8, a8, behind[0], 255 - a8)
-    out[1] = blend8(g8, a8, behind[1], 255 - a8)
-    out[2] = blend8(b8, a8, behind[2], 255 - a8)
+    out[0], out[1], out[2] = oit_over(r8, g8, b8, a8, behind[0], behind[1], behind[2])
 
 
 @njit(cache=True, inline="always")
@@ -150,6 +148,13 @@ def oit_colour8(sum_r, sum_g, sum_b, weight, transmit):
     and the coverage ``1 − T``, ``(r, g, b, a)``. Clear buffers (sums 0, T = 1) give coverage 0."""
     w = larger(weight, np.float32(0.01))
     return unorm8(sum_r / w), unorm8(sum_g / w), unorm8(sum_b / w), unorm8(F32_ONE - transmit)
+
+
+@njit(cache=True, inline="always")
+def oit_over(r8, g8, b8, a8, r, g, b):
+    """The 8-bit ``oit`` colour ``(r8, g8, b8)`` of coverage ``a8`` blended over the 8-bit
+    ``(r, g, b)`` behind it: ``C·A + behind·(1 − A)`` per channel (:func:`blend8`)."""
+    return blend8(r8, a8, r, 255 - a8), blend8(g8, a8, g, 255 - a8), blend8(b8, a8, b, 255 - a8)
 
 
 @njit(cache=True, inline="always")
@@ -345,10 +350,9 @@ def resolve_oit_row(sums, seen, row, rgb, eight):
             sums[TRANSMIT, row, j] if shown else F32_ONE)
     for col in range(seen.shape[1]):
         if seen[row, col] > 0:
-            a8 = eight[3, col]
-            rgb[row, col, 0] = blend8(eight[0, col], a8, rgb[row, col, 0], 255 - a8)
-            rgb[row, col, 1] = blend8(eight[1, col], a8, rgb[row, col, 1], 255 - a8)
-            rgb[row, col, 2] = blend8(eight[2, col], a8, rgb[row, col, 2], 255 - a8)
+            rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = oit_over(
+                eight[0, col], eight[1, col], eight[2, col], eight[3, col], rgb[row, col, 0], rgb[row, col, 1],
+                rgb[row, col, 2])
 
 
 @njit(cache=True, inline="always")
