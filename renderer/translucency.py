@@ -144,16 +144,14 @@ def oit_resolve(sum_r, sum_g, sum_b, weight, transmit, behind, out):
 
 @njit(cache=True, inline="always")
 def oit_colour8(sum_r, sum_g, sum_b, weight, transmit):
-    """The ``oit`` buffers of one pixel as 8 bits: the average colour ``Σαc / max(Σα, 0.01)``
-    and the coverage ``1 − T``, ``(r, g, b, a)``. Clear buffers (sums 0, T = 1) give coverage 0."""
+    """One pixel's ``oit`` buffers as 8 bits ``(r, g, b, a)``: ``Σαc / max(Σα, 0.01)``, coverage ``1 − T`` (0 if clear)."""
     w = larger(weight, np.float32(0.01))
     return unorm8(sum_r / w), unorm8(sum_g / w), unorm8(sum_b / w), unorm8(F32_ONE - transmit)
 
 
 @njit(cache=True, inline="always")
 def oit_over(r8, g8, b8, a8, r, g, b):
-    """The 8-bit ``oit`` colour ``(r8, g8, b8)`` of coverage ``a8`` blended over the 8-bit
-    ``(r, g, b)`` behind it: ``C·A + behind·(1 − A)`` per channel (:func:`blend8`)."""
+    """The 8-bit ``oit`` colour ``(r8, g8, b8)``, coverage ``a8``, over the 8-bit ``(r, g, b)`` (:func:`blend8`)."""
     return blend8(r8, a8, r, 255 - a8), blend8(g8, a8, g, 255 - a8), blend8(b8, a8, b, 255 - a8)
 
 
@@ -335,12 +333,10 @@ def emit_run(colour, first, a, row, c0, count, seen, start, colours, sums):
 
 @njit(cache=True, inline="always")
 def resolve_oit_row(sums, seen, row, rgb, eight):
-    """Every pixel of ``row`` that got a fragment: its ``oit`` buffers over ``rgb`` (as
-    :func:`oit_resolve`), in two loops. The first works out every pixel's 8-bit colour and
-    coverage (:func:`oit_colour8`) into ``eight`` (4, ≥ W) uint8 with no branch, eight pixels
-    at a time (a pixel without fragments reads clear buffers, not the stale ones); the
-    second blends those that got a fragment over ``rgb``, in 8-bit integers. In one loop,
-    the divisions and conversions ran one pixel at a time: 14 % of a translucent-three frame."""
+    """Every pixel of ``row`` that got a fragment: its ``oit`` buffers over ``rgb`` (as :func:`oit_resolve`).
+    First every pixel's 8-bit colour and coverage (:func:`oit_colour8`) into ``eight`` (4, ≥ W) uint8, no
+    branch, 8 lanes at a time (a pixel without fragments reads clear buffers, not stale ones); then those
+    with a fragment blended over ``rgb``. In one loop this ran scalar: 14 % of a translucent-three frame."""
     for col in range(seen.shape[1]):
         j = np.uint64(col)  # unsigned: no wrap-around, the loop vectorises
         shown = seen[row, j] > 0
