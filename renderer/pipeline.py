@@ -27,6 +27,7 @@ import numpy as np
 from lab.frame import Frame
 from renderer.camera import clipping_range, view_to_clip, world_to_view
 from renderer.clip import Clipped, clip_mesh, clipped_corners, corner_rows
+from renderer.free_cores import threads_of_this_frame
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
@@ -311,7 +312,8 @@ def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     >>> render(load_scene("cube")).rgb.shape
     (384, 512, 3)
     """
-    return _render(scene, options, keep_stages=False)[0]
+    with threads_of_this_frame():
+        return _render(scene, options, keep_stages=False)[0]
 
 
 def render_stages(scene, options: RenderOptions = RenderOptions()) -> tuple[Frame, Stages]:
@@ -322,7 +324,8 @@ def render_stages(scene, options: RenderOptions = RenderOptions()) -> tuple[Fram
     >>> int(stages.triangle.max()) < 12 and stages.depth.shape == (384, 512)
     True
     """
-    return _render(scene, options, keep_stages=True)
+    with threads_of_this_frame():
+        return _render(scene, options, keep_stages=True)
 
 
 def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, Stages | None]:

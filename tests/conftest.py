@@ -3,6 +3,10 @@
 ``HYPOTHESIS_PROFILE=ci`` (the default): few examples, derandomized, so every run of
 ``make test`` draws the same scenes. ``HYPOTHESIS_PROFILE=thorough``: ten times as many,
 freshly random each run, for hunting bugs.
+
+Frames in the tests use the threads they are set to, however busy the machine is
+(``SCANLAB_DYNAMIC_THREADS=0``, :mod:`renderer.free_cores`): a test that compares one thread
+with two must really draw with two. ``tests/renderer/test_free_cores.py`` turns it back on.
 """
 import os
 
@@ -13,3 +17,4 @@ _common = dict(deadline=None, print_blob=True,
 settings.register_profile("ci", max_examples=40, derandomize=True, database=None, **_common)
 settings.register_profile("thorough", max_examples=400, **_common)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+os.environ["SCANLAB_DYNAMIC_THREADS"] = "0"
