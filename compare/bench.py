@@ -91,25 +91,35 @@ def time_frames(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
 
 def thread_contention(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
     """Our frame time (ms) with one numba thread and with two, alternating in pairs (two
-    threads first in even pairs), the median ratio two/one, and numba's threading layer.
+    threads first in even pairs), the median ratio two/one, numba's threading layer and how
+    many of the frames set to two threads used one (the renderer fits its threads to the
+    free cores, :mod:`renderer.free_cores`; the machine's load is read afresh first).
     Run it with :func:`busy_core` holding a core to see contention."""
     import numba
 
     from renderer import render
+    from renderer.free_cores import MACHINE, SAMPLE_SECONDS
+
+    used = []  # threads the frames set to two really used (renderer.free_cores), timed frames only
 
     def with_threads(n):
         def frame():
             numba.set_num_threads(min(n, numba.config.NUMBA_NUM_THREADS))
             render(scene)
+            if n == 2:
+                used.append(MACHINE.last_frame)
         return frame
 
+    MACHINE.refresh()  # the machine's load as it is now, not since the frames before the spinner started
+    time.sleep(SAMPLE_SECONDS)
+    MACHINE.refresh()
     saved = numba.get_num_threads()
     try:
         two, one, ratios = alternate(with_threads(2), with_threads(1), repeat, warm_up)
     finally:
         numba.set_num_threads(saved)
     return {"one_thread": _summary(one), "two_threads": _summary(two), "ratio": statistics.median(ratios),
-            "layer": numba.threading_layer()}
+            "layer": numba.threading_layer(), "two_used_one": used[-len(two):].count(1)}
 
 
 class busy_core:

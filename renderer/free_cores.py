@@ -83,16 +83,22 @@ class FreeCores:
         self.read, self.clock = read, clock
         self.n_cores = n_cores or os.cpu_count() or 1
         self.last, self.last_time, self.others = read(), clock(), 0.0
+        self.last_frame = None  # threads the last frame used (for ``scanlab bench --contention``)
 
     def busy_elsewhere(self) -> float:
-        """Cores other processes kept busy over the last reading's interval."""
-        now = self.clock()
-        if now - self.last_time >= SAMPLE_SECONDS:
-            reading = self.read()
-            if reading is not None and self.last is not None:
-                self.others = others_cores(self.last, reading, self.n_cores)
-            self.last, self.last_time = reading, now
+        """Cores other processes kept busy over the last reading's interval, read again when
+        it is :data:`SAMPLE_SECONDS` old."""
+        if self.clock() - self.last_time >= SAMPLE_SECONDS:
+            self.refresh()
         return self.others
+
+    def refresh(self) -> None:
+        """Read now: the others' load since the last reading, however long ago that was (a
+        caller that wants the load of the last moment calls it twice, a moment apart)."""
+        now, reading = self.clock(), self.read()
+        if reading is not None and self.last is not None:
+            self.others = others_cores(self.last, reading, self.n_cores)
+        self.last, self.last_time = reading, now
 
     def threads(self, asked: int) -> int:
         """How many of ``asked`` threads a frame should use now."""
@@ -113,7 +119,7 @@ def threads_of_this_frame(cores: FreeCores = MACHINE):
     """A ``with`` block in which numba's loops use the threads the machine has free (at most
     as many as numba was set to); numba's setting is put back at the end."""
     asked = numba.get_num_threads()
-    use = cores.threads(asked) if enabled() else asked
+    use = cores.last_frame = cores.threads(asked) if enabled() else asked
     if use == asked:
         yield asked
         return

@@ -76,7 +76,8 @@ def measure(args, say=print) -> dict:
                                       repeat=args.repeat)
                 run["contention"].append({"scene": name, "size": f"{size[0]}x{size[1]}", **r})
                 say(f"other core busy, {name} {size[0]}x{size[1]}: 1 thread {r['one_thread']['median']:.1f} ms, "
-                    f"2 threads {r['two_threads']['median']:.1f} ms, 2/1 {r['ratio']:.2f}")
+                    f"2 threads {r['two_threads']['median']:.1f} ms, 2/1 {r['ratio']:.2f} "
+                    f"(the frames set to 2 used 1 in {r['two_used_one']} of {args.repeat})")
     if not args.no_startup:
         say("start-up of a fresh `scanlab render icosphere:level=5`, kernel cache cold then warm ...")
         run["startup_s"] = startup_seconds()
@@ -106,9 +107,13 @@ def report(run: dict) -> str:
         lines.append(f"Start-up (`scanlab render icosphere:level=5`, fresh process): kernel cache cold "
                      f"{s['cold']:.1f} s, warm {s['warm']:.1f} s.")
     if run.get("contention"):
+        c = run["contention"]
+        fewer = sum(r.get("two_used_one", 0) for r in c)
         lines.append("With another process spinning on one core, our frame time with 2 threads / 1 thread "
-                     f"(numba's {run['contention'][0]['layer']} layer; median of alternating pairs): " + ", ".join(
-                         f"{c['scene']} {c['size']} {c['ratio']:.2f}" for c in run["contention"]) + ".")
+                     f"(numba's {c[0]['layer']} layer; median of alternating pairs): " + ", ".join(
+                         f"{r['scene']} {r['size']} {r['ratio']:.2f}" for r in c) + ". "
+                     f"The renderer fits its threads to the cores other processes leave free: {fewer} of the "
+                     f"{len(c) * run['repeat']} frames set to 2 threads used 1.")
     memory = [r for r in run["rows"] if "memory" in r]
     for r in memory:
         m = r["memory"]

@@ -32,7 +32,8 @@ def test_the_table_has_a_row_per_measurement_and_names_errors():
     assert "unavailable: no file" in table[3]
 
 
-def test_one_thread_and_two_are_timed_in_pairs_while_a_core_is_busy():
+def test_one_thread_and_two_are_timed_in_pairs_while_a_core_is_busy(monkeypatch):
+    monkeypatch.setenv("SCANLAB_DYNAMIC_THREADS", "1")  # as outside the tests: threads fitted to free cores
     with busy_core() as busy:
         child = busy.child.pid
         assert os.path.exists(f"/proc/{child}")
@@ -41,6 +42,7 @@ def test_one_thread_and_two_are_timed_in_pairs_while_a_core_is_busy():
     for side in ("one_thread", "two_threads"):
         assert 0 < r[side]["min"] <= r[side]["median"] <= r[side]["max"]
     assert r["ratio"] > 0 and r["layer"] == "tbb"
+    assert r["two_used_one"] == 3  # the spinning child holds a core: one thread is what is left
 
 
 def test_pairs_alternate_which_frame_goes_first_after_the_warm_up():

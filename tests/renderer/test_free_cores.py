@@ -62,6 +62,18 @@ def test_the_load_is_read_again_only_after_the_sampling_interval():
     assert cores.threads(2) == 2
 
 
+def test_a_refresh_reads_at_once_and_two_a_moment_apart_give_the_load_of_that_moment():
+    r = Readings()
+    cores = FreeCores(r.read, r.clock, n_cores=2)
+    r.advance(10.0, others_ticks=0, our_ticks=500)  # a long quiet time
+    r.advance(0.02, others_ticks=2, our_ticks=0)  # then a neighbour starts spinning
+    cores.refresh()
+    assert cores.busy_elsewhere() < 0.01  # ten quiet seconds hide it
+    r.advance(0.02, others_ticks=2, our_ticks=0)
+    cores.refresh()
+    assert cores.busy_elsewhere() == pytest.approx(1.0) and cores.threads(2) == 1
+
+
 def test_without_proc_every_frame_gets_what_it_asked_for():
     cores = FreeCores(lambda: None, time.monotonic, n_cores=2)
     time.sleep(free_cores.SAMPLE_SECONDS)
