@@ -31,6 +31,7 @@ locator classes, the one numba's own ``NUMBA_CACHE_LOCATOR_CLASSES`` fills).
 """
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import os
 import shutil
@@ -44,7 +45,7 @@ LAYER = choose_threading_layer()
 
 import numba  # noqa: E402  (after the threading layer is chosen)
 from numba import prange  # noqa: E402
-from numba.core.caching import CacheImpl, _CacheLocator  # noqa: E402
+from numba.core.caching import CacheImpl, IndexDataCacheFile, _CacheLocator  # noqa: E402
 
 numba.config.THREADING_LAYER = LAYER  # also when something imported numba before us
 
@@ -229,3 +230,22 @@ class SourceTreeLocator(_CacheLocator):
 
 if SourceTreeLocator not in CacheImpl._locator_classes:
     CacheImpl._locator_classes.insert(0, SourceTreeLocator)
+
+
+def save_under_lock(save):
+    """numba's ``IndexDataCacheFile.save`` holding an exclusive lock on the kernel's index
+    (``<index>.lock``) while it reads the index, picks a data file name and writes both.
+    numba's own save is not safe between processes: two that file different argument types
+    of one kernel at once both take data file 1, and the index can end up naming the other
+    process's machine code. The helper of :mod:`renderer.compile_ahead` and the frame it
+    helps fill one cache at the same time."""
+    def locked(self, key, data):
+        with open(self._index_path + ".lock", "ab") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)  # released when the file closes
+            save(self, key, data)
+    locked.unlocked = save
+    return locked
+
+
+if not hasattr(IndexDataCacheFile.save, "unlocked"):
+    IndexDataCacheFile.save = save_under_lock(IndexDataCacheFile.save)

@@ -83,7 +83,7 @@ def test_an_edit_to_a_callee_in_another_file_shows_in_the_next_render(tmp_path):
     assert restored["image"] == cold["image"] and restored["misses"] == 0
 
 
-COLD_START_CPU_SECONDS = 15.0
+COLD_START_CPU_SECONDS = 18.0
 """The bar of :func:`test_a_cold_start_compiles_within_the_bar`: CPU seconds (user + system)
 of a fresh ``scanlab render icosphere:level=5`` with an empty kernel cache. Issue 15 asks
 ≤ 15 s of wall time on a fresh clone; compiling runs on one thread, so on an idle machine
@@ -95,7 +95,13 @@ CPU; the kernels grown since brought it to 14.3 s here (median of four) and a CI
 at 15.7 s. Built without the wrappers no one calls (:func:`renderer.jit.njit`), with the
 raster's band work compiled once outside its parallel loop, it takes 13.1 s here (median
 of four, alternating with the old tree); with no builtin ``min``/``max`` in a kernel
-(:mod:`renderer.min_max`), 11.7 s."""
+(:mod:`renderer.min_max`), 11.7 s. On a slower day of the same machine (everything, VTK's
+frames too, about 1.3 times slower) it took 14.2–15.7 s, and the wall time of issue 15 went
+over 15 s; since then the command compiles in two processes when the cache is empty
+(:mod:`renderer.compile_ahead`): 10.2–11.0 s of wall time where one process took 14.0–15.4.
+This test still times one process alone (``SCANLAB_COMPILE_AHEAD=0``), as a guard of how much
+there is to compile: with two processes the wall time was about 0.72 of one process's CPU
+time, so 18 s of it would still start in about 13 s, under issue 15's 15 s."""
 
 
 def test_a_cold_start_compiles_within_the_bar(tmp_path):
@@ -103,6 +109,7 @@ def test_a_cold_start_compiles_within_the_bar(tmp_path):
     first frame needs and writes its PNG, within :data:`COLD_START_CPU_SECONDS` of CPU."""
     environment = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
     environment["SCANLAB_KERNEL_CACHE"] = str(tmp_path / "kernels")
+    environment["SCANLAB_COMPILE_AHEAD"] = "0"  # one process: its CPU time is all there is to compile
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     started = time.perf_counter()
     done = subprocess.run([sys.executable, "-m", "lab", "render", "icosphere:level=5", "-o", str(tmp_path / "ico5.png")],
@@ -289,3 +296,23 @@ def test_kernels_are_compiled_without_the_wrappers_they_do_not_need():
     from renderer.reflection.vtk_spans import vtk_light_kernel
     for kernel in (band_dividing, band_walking, vtk_light_kernel):
         assert kernel.targetoptions.get("no_cpython_wrapper") is True
+
+
+def test_a_kernel_is_filed_under_a_lock_another_process_can_hold(tmp_path):
+    """numba's save of a kernel (index, then data file) waits while another process holds the
+    kernel's index lock (:func:`renderer.jit.save_under_lock`): the helper of
+    :mod:`renderer.compile_ahead` and the frame it helps never pick the same data file."""
+    import fcntl
+    import threading
+
+    from numba.core.caching import IndexDataCacheFile
+
+    cache = IndexDataCacheFile(str(tmp_path), "kernel-1", "stamp")
+    with open(cache._index_path + ".lock", "ab") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        saving = threading.Thread(target=cache.save, args=(("sig", "cpu"), b"machine code"))
+        saving.start()
+        saving.join(0.5)
+        assert saving.is_alive() and cache.load(("sig", "cpu")) is None  # waiting for the lock
+    saving.join(10)
+    assert not saving.is_alive() and cache.load(("sig", "cpu")) == b"machine code"
