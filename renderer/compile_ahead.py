@@ -31,6 +31,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from lab.atomic import atomic_file
+
 KERNELS_FILE = Path(__file__).with_name("first_frame_kernels.pickle")
 """The first frame's kernels and argument types (a pickle of numba types; :func:`record`)."""
 
@@ -68,7 +70,8 @@ def record(path: Path = KERNELS_FILE, scene: str = START_UP_SCENE) -> list[tuple
 
     with event.install_listener("numba:compile", Outermost()):
         render(load_scene(scene))
-    path.write_bytes(pickle.dumps(compiled, protocol=4))
+    with atomic_file(path) as f:
+        f.write(pickle.dumps(compiled, protocol=4))
     return compiled
 
 
