@@ -34,7 +34,7 @@ import numpy as np
 from renderer.jit import njit
 from renderer.min_max import larger, smaller
 from renderer.spans import LANES, round_up_to_lanes
-from renderer.visibility_buffer import depth_bits
+from renderer.visibility_buffer import depth_bits, nearer_or_later
 from renderer.window import SUBPIXEL, SUBPIXEL_BITS
 
 
@@ -86,8 +86,9 @@ def fill_narrow_rows(f, columns, lo, hi, plane, kk, top_left, depth_test, depth,
     ``(start, lanes)`` from :func:`lanes_start`), numbered ``kk`` in the visibility buffer,
     whose set-up row is ``plane`` (11,) (:class:`renderer.raster.TriangleSetup`): on each
     row, the group's pixels inside all three edges (:func:`edge_function`) whose depth
-    passes the test (LEQUAL; every one inside without ``depth_test``) take the triangle's
-    depth and number; the others keep their old values."""
+    passes the test (:func:`renderer.visibility_buffer.nearer_or_later`; every one inside
+    without ``depth_test``) take the triangle's depth and number; the others keep their
+    old values."""
     start, lanes = columns
     e0, c0, r0, bar0 = edge_function(f, 0, start, lo, top_left)
     e1, c1, r1, bar1 = edge_function(f, 1, start, lo, top_left)
@@ -102,7 +103,7 @@ def fill_narrow_rows(f, columns, lo, hi, plane, kk, top_left, depth_test, depth,
             inside = (e0 + c0 * i > bar0) & (e1 + c1 * i > bar1) & (e2 + c2 * i > bar2)
             z = depth_bits(z_row + zx * (col + 0.5 - ax))
             old_z, old_k = depth_row[at], index_row[at]
-            nearer = inside & ((z <= old_z) | (not depth_test))
+            nearer = inside & (nearer_or_later(z, kk, old_z, old_k) | (not depth_test))
             depth_row[at] = z if nearer else old_z
             index_row[at] = kk if nearer else old_k
         e0, e1, e2 = e0 + r0, e1 + r1, e2 + r2

@@ -60,12 +60,16 @@ class RenderOptions:
         tables of the triangles that won a pixel only; False (the plain path, the same
         bytes, tests compare them) cuts every triangle against all six planes, writes each
         out, and sets them all up at once for the raster and for shading.
+    backs_last : with the z-buffer on, draw the back faces after the front faces and skip
+        those a tile z-buffer shows hidden (:mod:`renderer.hidden_back_faces`); False draws
+        every triangle in order (the plain path; the same bytes, tests compare them).
     """
 
     fill_rule: str = "top-left"
     interpolation: str | None = None
     spans: bool = True
     lean: bool = True
+    backs_last: bool = True
 
 
 class SceneGeometry(NamedTuple):
@@ -350,8 +354,10 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     translucent = (materials.opacity[geo.tri_object[clipped.clip_source]] < 1.0 if (materials.opacity < 1.0).any()
                    else np.zeros(clipped.count, np.bool_))
     opaque = clipped.take(~translucent) if translucent.any() else clipped
+    backs_last = options.backs_last and rules.depth_test and not rules.cull_back
     vis = rasterize_visibility(opaque.indexed(ws, "raster.corners"), width, height, rules.fill_rule, ws=ws,
-                               depth_test=rules.depth_test, cull_back=rules.cull_back, batch=BATCH if lean else None)
+                               depth_test=rules.depth_test, cull_back=rules.cull_back, batch=BATCH if lean else None,
+                               backs_last=backs_last)
     won = opaque.take(visible_triangles(vis.tri_index, opaque.count, ws)) if lean else opaque  # as vis.tri_index counts
     if any_flat(materials) and not every_normal:
         face_normals_of(geo.verts_view, geo.triangles, shown_sources(won, clipped.clip_source[translucent]),

@@ -24,9 +24,14 @@ Rules, each in one place:
   sharing an edge never both draw, and never both miss, a pixel on it.
 - **Depth** (:func:`rasterize`): window z interpolated linearly in screen space (it is
   affine there), rounded to the 24-bit depth buffer, test LEQUAL (a later triangle at
-  equal depth wins), cleared to 1.0. The depth plane is set up from the corners in a
-  canonical order (:func:`depth_plane`), so coincident triangles get bit-identical depths
-  whatever order they list their corners in, and the tie goes to the later one everywhere.
+  equal depth wins: :func:`renderer.visibility_buffer.nearer_or_later`), cleared to 1.0.
+  The depth plane is set up from the corners in a canonical order (:func:`depth_plane`),
+  so coincident triangles get bit-identical depths whatever order they list their corners
+  in, and the tie goes to the later one everywhere.
+
+- **Back faces last** (:mod:`renderer.hidden_back_faces`): with the z-buffer on, a band
+  draws a batch's front faces, then its back faces, skipping those a tile z-buffer shows
+  hidden; the depth test's tie rule gives the pixels drawing in order gives.
 
 Determinism: every pixel sees the triangles in the order given (objects in scene order,
 triangles in mesh order), as OpenGL guarantees, so ties resolve the same way every run.
@@ -46,6 +51,7 @@ from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibilit
                                         depth_to_window, fill_columns, finish_band)
 from renderer.edge_functions import fill_narrow_rows, lanes_start
 from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
+from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, fragment_depth_floor, hidden_in_tiles, new_tiles
 from renderer.window import SUBPIXEL
 from renderer.workspace import empty
 
@@ -366,27 +372,40 @@ def fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_in
 
 
 @njit(cache=True, inline="always")
-def draw_band(b, setup, n_bands, block_rows, rule, depth_test, first_index, depth, tri_index, fill_stretch):
-    """Band ``b``'s share of :func:`rasterize`: every triangle drawn on its rows, in order, a
-    block of ``block_rows`` rows at a time (block j belongs to band j mod ``n_bands``), each
-    block's rows ``top … bottom`` of triangle ``k`` filled by ``fill_stretch(k, top, bottom, …)``:
+def draw_band(b, setup, n_bands, block_rows, rule, depth_test, first_index, buffer, fill_stretch, tiles):
+    """Band ``b``'s share of :func:`rasterize`: every triangle drawn on its rows, a block of
+    ``block_rows`` rows at a time (block j belongs to band j mod ``n_bands``), each block's
+    rows ``top … bottom`` of triangle ``k`` filled by ``fill_stretch(k, top, bottom, …)``:
     :func:`fill_rows_dividing` (one division per edge and row) or :func:`fill_rows` (the
     edges walked). Each kernel passes its own, inlined there, so the dividing kernel never
-    compiles the walk."""
-    for k in range(setup.ccw.shape[0]):
-        lo, hi = setup.rows[k, 0], setup.rows[k, 1]
-        block = first_block_of_band(lo, b, n_bands, block_rows)
-        while block * block_rows <= hi:  # none when lo > hi (nothing to draw)
-            top, bottom = larger(lo, block * block_rows), smaller(hi, block * block_rows + block_rows - 1)
-            fill_stretch(k, top, bottom, setup, rule, depth_test, first_index, depth, tri_index)
-            block += n_bands
+    compiles the walk. ``buffer`` is the visibility buffer's ``(depth, tri_index)``.
+
+    With a tile z-buffer ``tiles`` (not ``NO_TILES``): the front faces, then the back faces,
+    each block of their rows skipped where the tiles show it hidden (:mod:`renderer.hidden_back_faces`)."""
+    depth, tri_index = buffer
+    backs_last = tiles.shape[1] > 0
+    for backs in range(2 if backs_last else 1):
+        for k in range(setup.ccw.shape[0]):
+            if backs_last and setup.front[k] == (backs == 1):
+                continue
+            lo, hi = setup.rows[k, 0], setup.rows[k, 1]
+            block = first_block_of_band(lo, b, n_bands, block_rows)
+            floor = -1  # worked out at the first block this band draws: most triangles have none here
+            while block * block_rows <= hi:  # none when lo > hi (nothing to draw)
+                top, bottom = larger(lo, block * block_rows), smaller(hi, block * block_rows + block_rows - 1)
+                if backs and floor < 0:
+                    floor = fragment_depth_floor(setup.ccw[k], setup.plane[k])
+                if not backs or not hidden_in_tiles(floor, setup.ccw[k], top, bottom, first_index, depth, tiles):
+                    fill_stretch(k, top, bottom, setup, rule, depth_test, first_index, depth, tri_index)
+                block += n_bands
 
 
 @njit(cache=True, from_python=False, refcounts=False)
-def band_dividing(b, setup, n_bands, rule, depth_test, first_index, clear, depth, tri_index):
-    """Band ``b``'s whole share of :func:`rasterize`: its rows cleared when ``clear``
-    (:func:`clear_band`), then every triangle drawn on them (:func:`draw_band` with
-    :func:`fill_rows_dividing`), in blocks of :data:`renderer.bands.BLOCK_ROWS` rows.
+def band_dividing(b, setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, tiles):
+    """Band ``b``'s whole share of :func:`rasterize`: its rows cleared for the first batch
+    (``ends`` has :data:`FIRST_BATCH`, :func:`clear_band`), then every triangle drawn on them
+    (:func:`draw_band` with :func:`fill_rows_dividing`, back faces last with a tile
+    z-buffer ``tiles``), in blocks of :data:`renderer.bands.BLOCK_ROWS` rows.
 
     A kernel of its own, called from the parallel loop rather than inlined into it: numba's
     parallel passes then analyse a one-line loop body, not the whole fill (measured, a cold
@@ -395,18 +414,19 @@ def band_dividing(b, setup, n_bands, rule, depth_test, first_index, clear, depth
     this a second time. Without reference counts (``refcounts=False``): each triangle's rows
     of the set-up are views, and counting them cost the kernel 5 % against the inlined loop
     (menger3, 512², one thread, 12.8–13.3 → 13.8–14.0 ms; without the counts 12.7–13.0)."""
-    if clear:
+    if ends & FIRST_BATCH:
         clear_band(b, n_bands, BLOCK_ROWS, depth, tri_index)
-    draw_band(b, setup, n_bands, BLOCK_ROWS, rule, depth_test, first_index, depth, tri_index, fill_rows_dividing)
+    draw_band(b, setup, n_bands, BLOCK_ROWS, rule, depth_test, first_index, (depth, tri_index), fill_rows_dividing,
+              tiles)
 
 
 @njit(cache=True, from_python=False, refcounts=False)
-def band_walking(b, setup, n_bands, rule, depth_test, first_index, clear, depth, tri_index):
+def band_walking(b, setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, tiles):
     """:func:`band_dividing` for :func:`rasterize_walking`: blocks of :data:`WALK_BLOCK_ROWS`
     rows, the spans found by walking the edges (:func:`fill_rows`)."""
-    if clear:
+    if ends & FIRST_BATCH:
         clear_band(b, n_bands, WALK_BLOCK_ROWS, depth, tri_index)
-    draw_band(b, setup, n_bands, WALK_BLOCK_ROWS, rule, depth_test, first_index, depth, tri_index, fill_rows)
+    draw_band(b, setup, n_bands, WALK_BLOCK_ROWS, rule, depth_test, first_index, (depth, tri_index), fill_rows, tiles)
 
 
 FIRST_BATCH, LAST_BATCH = 1, 2
@@ -416,7 +436,7 @@ window depth and coverage, :func:`finish_band`), or both."""
 
 
 @njit(cache=True, parallel=True)
-def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, covered):
+def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, covered, tiles):
     """Scan-convert every triangle of ``setup`` into the visibility buffer (the loop kernel).
 
     The image's rows are dealt out to ``n_bands`` bands in blocks of
@@ -424,9 +444,10 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_in
     band draws *every* triangle in order, on its own rows only (after clearing them, for the
     first batch: ``ends`` has :data:`FIRST_BATCH`). A pixel belongs to one band and sees the
     triangles in draw order, so the result is the same, bit for bit, as a serial loop
-    (z-buffer ties included). After the last batch (:data:`LAST_BATCH`) each band writes its
-    rows' coverage into ``covered`` (H, W) bool (:func:`renderer.visibility_buffer.finish_band`). ``depth_test`` False draws
-    every fragment over what is there (the painter's algorithm, or no hidden-surface removal
+    (z-buffer ties included), also with a tile z-buffer ``tiles``: back faces last
+    (:func:`draw_band`). After the last batch (:data:`LAST_BATCH`) each band writes its rows'
+    coverage into ``covered`` (H, W) bool (:func:`renderer.visibility_buffer.finish_band`).
+    ``depth_test`` False draws every fragment over what is there (the painter's algorithm, or no hidden-surface removal
     at all): then the last triangle drawn wins.
     ``first_index`` is the number of the setup's first triangle in ``tri_index`` (the
     triangles arrive in batches, :func:`rasterize_visibility`). Each band's work is
@@ -439,19 +460,17 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_in
     NamedTuple's fields inside ``prange`` (numba issues #5872, #7135); ``setup`` is only read.
     """
     for b in prange(n_bands):
-        band_dividing(np.int64(b), setup, n_bands, rule, depth_test, first_index, (ends & FIRST_BATCH) != 0, depth,
-                      tri_index)
+        band_dividing(np.int64(b), setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, tiles)
         if ends & LAST_BATCH:
             finish_band(np.int64(b), n_bands, BLOCK_ROWS, tri_index, covered)
 
 
 @njit(cache=True, parallel=True)
-def rasterize_walking(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, covered):
+def rasterize_walking(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, covered, tiles):
     """:func:`rasterize`, each span found by walking the triangle's edges (:func:`fill_rows`):
     the same pixels, quicker for tall triangles (:func:`is_tall`)."""
     for b in prange(n_bands):
-        band_walking(np.int64(b), setup, n_bands, rule, depth_test, first_index, (ends & FIRST_BATCH) != 0, depth,
-                     tri_index)
+        band_walking(np.int64(b), setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, tiles)
         if ends & LAST_BATCH:
             finish_band(np.int64(b), n_bands, WALK_BLOCK_ROWS, tri_index, covered)
 
@@ -514,17 +533,22 @@ def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back
     return set_up_corners(whole.corners(0, whole.count), whole.fixed, whole.window, height, cull_back, ws, name)
 
 
-def is_tall(setup: TriangleSetup, sample: int = 256) -> bool:
-    """True when the set-up triangles span :data:`TALL_ROWS` rows or more on average, judged
-    on about ``sample`` of them spread through the batch (a choice of speed only: both
-    kernels draw the same pixels)."""
+def mean_rows(setup: TriangleSetup, sample: int = 256) -> float:
+    """The rows the set-up triangles span on average, judged on about ``sample`` of them
+    spread through the batch (0.0 for none)."""
     rows = setup.rows[:: max(1, len(setup.rows) // sample)]
-    return bool(len(rows)) and float(np.maximum(rows[:, 1] - rows[:, 0] + 1, 0).mean()) >= TALL_ROWS
+    return float(np.maximum(rows[:, 1] - rows[:, 0] + 1, 0).mean()) if len(rows) else 0.0
+
+
+def is_tall(setup: TriangleSetup) -> bool:
+    """True when the set-up triangles span :data:`TALL_ROWS` rows or more on average
+    (:func:`mean_rows`; a choice of speed only: both kernels draw the same pixels)."""
+    return mean_rows(setup) >= TALL_ROWS
 
 
 def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, fill_rule: str = "top-left",
                          n_bands: int | None = None, ws=None, depth_test: bool = True, cull_back: bool = False,
-                         batch: int | None = BATCH) -> Visibility:
+                         batch: int | None = BATCH, backs_last: bool = False) -> Visibility:
     """Set up the triangles and fill the visibility buffer (the Python wrapper the pipeline calls).
 
     The triangles (:class:`IndexedTriangles`) are drawn in order, ``batch`` at a time (None:
@@ -534,18 +558,25 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     (depth and coverage, fresh each time) lives in it.
     ``n_bands`` defaults to two per thread (:func:`renderer.bands.raster_bands`);
     ``depth_test=False`` turns the z-buffer test off; ``cull_back=True`` drops back-facing triangles.
+    ``backs_last=True`` (with the depth test) draws each batch's back faces after its front
+    faces, skipping those a tile z-buffer shows hidden (:mod:`renderer.hidden_back_faces`),
+    in each batch whose triangles span :data:`~renderer.hidden_back_faces.BACKS_LAST_ROWS`
+    rows or more on average: the same buffer, quicker for closed surfaces seen from outside.
     """
     depth, covered = np.empty((height, width), np.int32), np.empty((height, width), np.bool_)  # the frame's
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)
     bands, rule, count = raster_bands(height, n_bands), FILL_RULES[fill_rule], triangles.count
+    tiles = new_tiles(height, width, ws) if backs_last and depth_test else NO_TILES
     step = max(count, 1) if batch is None else int(batch)
     for a in range(0, max(count, 1), step):
         rows = np.ascontiguousarray(triangles.corners(a, min(a + step, count)), dtype=np.int64)
         setup = set_up_corners(rows, triangles.fixed, triangles.window, height, cull_back, ws, "raster")
         with one_band_at_a_time():
-            kernel = rasterize_walking if is_tall(setup) else rasterize
+            rows = mean_rows(setup)
+            kernel = rasterize_walking if rows >= TALL_ROWS else rasterize
             ends = (FIRST_BATCH if a == 0 else 0) | (LAST_BATCH if a + step >= count else 0)
-            kernel(setup, bands, rule, bool(depth_test), a, ends, depth, tri_index, covered)
+            kernel(setup, bands, rule, bool(depth_test), a, ends, depth, tri_index, covered,
+                   tiles if rows >= BACKS_LAST_ROWS else NO_TILES)
     return Visibility(depth, tri_index, covered)
 
 

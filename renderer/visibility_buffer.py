@@ -35,6 +35,16 @@ def depth_bits(z):
 
 
 @njit(cache=True, inline="always")
+def nearer_or_later(z, kk, old_z, old_k):
+    """The z-buffer's test: the fragment of triangle ``kk`` at depth ``z`` takes a pixel held
+    by triangle ``old_k`` at ``old_z`` when it is nearer, or as near and numbered later. For
+    triangles drawn in order (each numbered later than all before it) that is OpenGL's
+    LEQUAL; it also decides a triangle drawn after later ones as drawing in order would
+    (:mod:`renderer.hidden_back_faces`). An empty pixel is numbered :data:`EMPTY`, below all."""
+    return (z < old_z) | ((z == old_z) & (kk > old_k))
+
+
+@njit(cache=True, inline="always")
 def fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row):
     """The depth test of columns ``first … last`` (two or more) of one row (``depth_row``,
     ``index_row``; see :func:`fill_columns`) in whole groups of
@@ -57,7 +67,7 @@ def fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row):
         at = np.uint64(col)  # unsigned: numba adds no wrap-around for a negative index, which kept this loop scalar
         z = depth_bits(z_row + zx * (col + 0.5 - ax))
         old_z, old_k = depth_row[at], index_row[at]
-        nearer = (z <= old_z) & (col >= first) & (col <= last)
+        nearer = nearer_or_later(z, kk, old_z, old_k) & (col >= first) & (col <= last)
         depth_row[at] = z if nearer else old_z
         index_row[at] = kk if nearer else old_k
 
@@ -65,8 +75,8 @@ def fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row):
 @njit(cache=True, inline="always")
 def fill_columns(row, first, last, z_row, zx, ax, kk, depth_test, depth, tri_index):
     """Fill columns ``first … last`` of scanline ``row`` with triangle ``kk``, whose depth at a
-    pixel centre is :func:`pixel_depth`'s ``z_row + zx·(col + 0.5 − ax)``: depth test (LEQUAL),
-    visibility-buffer writes.
+    pixel centre is :func:`pixel_depth`'s ``z_row + zx·(col + 0.5 − ax)``: depth test
+    (:func:`nearer_or_later`), visibility-buffer writes.
 
     Each pixel is written, with its old values where the test fails, instead of branching
     on the test, so a test that passes and fails at random (deep overdraw: a Menger sponge)
@@ -84,7 +94,7 @@ def fill_columns(row, first, last, z_row, zx, ax, kk, depth_test, depth, tri_ind
     if last == first:
         at = np.uint64(first)
         z, old_z = depth_bits(z_row + zx * (first + 0.5 - ax)), depth_row[at]
-        index_row[at] = kk if z <= old_z else index_row[at]
+        index_row[at] = kk if nearer_or_later(z, kk, old_z, index_row[at]) else index_row[at]
         depth_row[at] = smaller(old_z, z)
         return
     fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row)

@@ -546,6 +546,7 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     thin ones over them, drawn together so that depth ties and overdraw count: the same
     depth and triangle at every pixel. is_tall sends the tall batch to the walking kernel."""
     from renderer.bands import raster_bands
+    from renderer.hidden_back_faces import NO_TILES
     from renderer.raster import (DEPTH_CLEAR, EMPTY, FILL_RULES, FIRST_BATCH, LAST_BATCH, TALL_ROWS, is_tall, rasterize,
                                  rasterize_walking, set_up)
     width, height = 37, 90
@@ -567,7 +568,7 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
         depth, tri_index = np.empty((height, width), np.int32), np.empty((height, width), np.int32)
         covered = np.empty((height, width), np.bool_)
         kernel(setup, raster_bands(height, 3), FILL_RULES[rule], depth_test, 0, FIRST_BATCH | LAST_BATCH, depth,
-               tri_index, covered)
+               tri_index, covered, NO_TILES)
         buffers.append((depth, tri_index))
     np.testing.assert_array_equal(buffers[1][1], buffers[0][1])
     np.testing.assert_array_equal(buffers[1][0], buffers[0][0])

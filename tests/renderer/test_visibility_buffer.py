@@ -14,7 +14,7 @@ from renderer.bands import BLOCK_ROWS
 from renderer.jit import njit
 from renderer.spans import LANES
 from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, clear_band, depth_bits,
-                                        depth_to_window, fill_columns, finish_band)
+                                        depth_to_window, fill_columns, finish_band, nearer_or_later)
 
 
 @njit
@@ -37,6 +37,19 @@ def plain_fill(row, first, last, z_row, zx, ax, kk, depth, tri_index):
         z = depth_bits(z_row + zx * (col + 0.5 - ax))
         if z <= depth[row, col]:
             depth[row, col], tri_index[row, col] = z, kk
+
+
+def test_a_fragment_wins_when_nearer_or_as_near_and_later():
+    """The z-buffer's test, on (depth, triangle): nearer wins, farther loses, and a tie goes to
+    the triangle numbered later, whichever was drawn first; an empty pixel (EMPTY) loses a tie."""
+    assert nearer_or_later(5, 1, 6, 9) and not nearer_or_later(7, 9, 6, 1)
+    assert nearer_or_later(6, 9, 6, 1) and not nearer_or_later(6, 1, 6, 9)
+    assert nearer_or_later(DEPTH_CLEAR, 0, DEPTH_CLEAR, EMPTY)
+    for first, second in ((1, 2), (2, 1)):  # two fragments at one depth, either drawn first
+        depth, tri_index = np.full((1, 3), DEPTH_CLEAR, np.int32), np.full((1, 3), EMPTY, np.int32)
+        for kk in (first, second):
+            fill_columns(0, 0, 2, 0.25, 0.0, 0.0, np.int32(kk), True, depth, tri_index)
+        assert tri_index.tolist() == [[2, 2, 2]]
 
 
 @pytest.mark.parametrize("width", [3, LANES, 13, 21])
