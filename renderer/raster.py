@@ -292,7 +292,7 @@ rows, a pixel wide, where a walked row is one pixel) 3.9 → 4.2 ms at two threa
 
 TALL_ROWS = 4
 """The rows a batch's triangles must span on average for :func:`rasterize_walking` to draw
-it (:func:`is_tall`); below it, :func:`rasterize`, one division per edge and row. The walk's
+it (:func:`mean_rows`); below it, :func:`rasterize`, one division per edge and row. The walk's
 kernel holds the dividing loop too (for short stretches), and is the slower of the two
 where nearly every stretch is that short. Measured, one thread, the raster alone, dividing
 → walking kernel: ico5 at 512² (9.5 rows a triangle) 5.57 → 4.86 ms, a level-3 Menger
@@ -468,7 +468,7 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_in
 @njit(cache=True, parallel=True)
 def rasterize_walking(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, covered, tiles):
     """:func:`rasterize`, each span found by walking the triangle's edges (:func:`fill_rows`):
-    the same pixels, quicker for tall triangles (:func:`is_tall`)."""
+    the same pixels, quicker for tall triangles (:data:`TALL_ROWS`)."""
     for b in prange(n_bands):
         band_walking(np.int64(b), setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, tiles)
         if ends & LAST_BATCH:
@@ -540,12 +540,6 @@ def mean_rows(setup: TriangleSetup, sample: int = 256) -> float:
     return float(np.maximum(rows[:, 1] - rows[:, 0] + 1, 0).mean()) if len(rows) else 0.0
 
 
-def is_tall(setup: TriangleSetup) -> bool:
-    """True when the set-up triangles span :data:`TALL_ROWS` rows or more on average
-    (:func:`mean_rows`; a choice of speed only: both kernels draw the same pixels)."""
-    return mean_rows(setup) >= TALL_ROWS
-
-
 def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, fill_rule: str = "top-left",
                          n_bands: int | None = None, ws=None, depth_test: bool = True, cull_back: bool = False,
                          batch: int | None = BATCH, backs_last: bool = False) -> Visibility:
@@ -572,11 +566,11 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
         rows = np.ascontiguousarray(triangles.corners(a, min(a + step, count)), dtype=np.int64)
         setup = set_up_corners(rows, triangles.fixed, triangles.window, height, cull_back, ws, "raster")
         with one_band_at_a_time():
-            rows = mean_rows(setup)
-            kernel = rasterize_walking if rows >= TALL_ROWS else rasterize
+            span = mean_rows(setup)  # chooses the kernel and the order, never the pixels
+            kernel = rasterize_walking if span >= TALL_ROWS else rasterize
             ends = (FIRST_BATCH if a == 0 else 0) | (LAST_BATCH if a + step >= count else 0)
             kernel(setup, bands, rule, bool(depth_test), a, ends, depth, tri_index, covered,
-                   tiles if rows >= BACKS_LAST_ROWS else NO_TILES)
+                   tiles if span >= BACKS_LAST_ROWS else NO_TILES)
     return Visibility(depth, tri_index, covered)
 
 

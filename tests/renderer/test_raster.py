@@ -544,10 +544,10 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     """rasterize_walking (spans by edge walks) and rasterize (a division per edge and row) on
     the same set-up: 240 triangles of every kind (ties, slivers, huge, off-screen) and 40 tall
     thin ones over them, drawn together so that depth ties and overdraw count: the same
-    depth and triangle at every pixel. is_tall sends the tall batch to the walking kernel."""
+    depth and triangle at every pixel. mean_rows sends the tall batch to the walking kernel."""
     from renderer.bands import raster_bands
     from renderer.hidden_back_faces import NO_TILES
-    from renderer.raster import (DEPTH_CLEAR, EMPTY, FILL_RULES, FIRST_BATCH, LAST_BATCH, TALL_ROWS, is_tall, rasterize,
+    from renderer.raster import (DEPTH_CLEAR, EMPTY, FILL_RULES, FIRST_BATCH, LAST_BATCH, TALL_ROWS, mean_rows, rasterize,
                                  rasterize_walking, set_up)
     width, height = 37, 90
     rng = np.random.default_rng(5)
@@ -574,7 +574,8 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     np.testing.assert_array_equal(buffers[1][0], buffers[0][0])
     assert len(np.unique(buffers[0][1][buffers[0][1] >= len(small)])) > 30  # the tall ones really show
     assert (buffers[0][1] != EMPTY).mean() > 0.5 and (buffers[0][0] < DEPTH_CLEAR).any()
-    assert is_tall(set_up(tall, window[len(small):], height, False)) and not is_tall(set_up(small[:1] * 0, window[:1], height, False))
+    assert mean_rows(set_up(tall, window[len(small):], height, False)) >= TALL_ROWS
+    assert mean_rows(set_up(small[:1] * 0, window[:1], height, False)) < TALL_ROWS
     rows = set_up(tall, window[len(small):], height, False).rows
     assert (rows[:, 1] - rows[:, 0] + 1).mean() >= TALL_ROWS
 
