@@ -68,6 +68,8 @@ class Workspace:
 
     def __init__(self):
         self._arrays: dict[str, np.ndarray] = {}
+        self._kept: dict[str, tuple] = {}
+        self._zeros: dict[str, np.ndarray] = {}
 
     def array(self, name: str, shape, dtype=np.float64) -> np.ndarray:
         """An uninitialised C-contiguous array of ``shape`` (an int or a sequence of ints); its
@@ -80,6 +82,46 @@ class Workspace:
             store = np.empty(max(size, 1), dtype)
             self._arrays[name] = store
         return store[:size].reshape(shape)
+
+
+    def kept(self, name: str, key, build):
+        """The array ``build()`` made for ``key`` (hashable), kept under ``name`` and made again
+        only when the key changes: for tables that depend on the scene's layout alone (which
+        object each triangle belongs to), not on the camera. Callers must not write to it.
+
+        >>> ws = Workspace()
+        >>> ws.kept("o", (2,), lambda: np.zeros(2)) is ws.kept("o", (2,), lambda: np.ones(2))
+        True
+        """
+        held = self._kept.get(name)
+        if held is None or held[0] != key:
+            held = self._kept[name] = (key, build())
+        return held[1]
+
+    def zeros(self, name: str, size: int, dtype=np.int64) -> np.ndarray:
+        """A 1-D array of ``size`` zeros that stays zero between uses: filled once when it is
+        made (or grown), after which each caller puts back every zero it changed (cheaper than
+        filling a table as long as a mesh's triangles when a frame touches few of its entries).
+
+        >>> ws = Workspace()
+        >>> a = ws.zeros("n", 4); a[1] = 7; a[1] = 0
+        >>> ws.zeros("n", 3).tolist()
+        [0, 0, 0]
+        """
+        store = self._zeros.get(name)
+        if store is None or store.size < size or store.dtype != dtype:
+            store = self._zeros[name] = np.zeros(max(int(size), 1), dtype)
+        return store[:size]
+
+
+def kept(ws: Workspace | None, name: str, key, build) -> np.ndarray:
+    """``ws.kept(...)`` when a workspace is given, else ``build()``."""
+    return build() if ws is None else ws.kept(name, key, build)
+
+
+def zeros(ws: Workspace | None, name: str, size: int, dtype=np.int64) -> np.ndarray:
+    """``ws.zeros(...)`` when a workspace is given, else a fresh ``np.zeros``."""
+    return np.zeros(size, dtype) if ws is None else ws.zeros(name, size, dtype)
 
 
 def empty(ws: Workspace | None, name: str, shape, dtype=np.float64) -> np.ndarray:

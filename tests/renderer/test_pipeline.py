@@ -413,6 +413,36 @@ def test_the_scene_tables_live_in_the_workspace_and_what_render_stages_returns_i
         np.testing.assert_array_equal(held, now)
 
 
+def test_the_tables_of_the_scene_layout_are_kept_across_frames_and_made_again_when_it_changes():
+    """Each triangle's and vertex's object, and the zero texture coordinates of a scene without
+    any, depend on the scene's layout alone: kept in the workspace from one frame to the next
+    (the same memory, not written again), and made again for a scene laid out otherwise —
+    frames of different scenes through one workspace give each scene's own tables."""
+    from renderer.camera import view_to_clip, world_to_view
+    from renderer.pipeline import object_numbers, transform_scene
+    from renderer.workspace import Workspace
+
+    ws = Workspace()
+    globe = load_scene("textured-sphere")
+    bare = replace(globe, objects=(replace(globe.objects[0], mesh=replace(globe.objects[0].mesh, tcoords=None),
+                                           texture=None),))  # the same layout, no texture coordinates
+    scenes = [load_scene("translucent-three"), bare, globe, bare, load_scene("cube"), load_scene("translucent-three")]
+    textured = []
+    for scene in scenes:
+        w, h = scene.image.size
+        args = (scene, world_to_view(scene.camera), view_to_clip(scene.camera, w / h, (NEAR, FAR)))
+        kept, fresh = transform_scene(*args, ws), transform_scene(*args)
+        for name in ("tri_object", "vert_object", "tcoords"):
+            np.testing.assert_array_equal(getattr(kept, name), getattr(fresh, name), err_msg=name)
+        textured.append(bool(kept.tcoords.any()))
+        np.testing.assert_array_equal(kept.vert_object, np.repeat(np.arange(len(scene.objects)),
+                                                                  [o.mesh.n_points for o in scene.objects]))
+    assert textured == [False, False, True, False, False, False]
+    again = transform_scene(scenes[0], world_to_view(scenes[0].camera), np.eye(4), ws)
+    assert again.tri_object is transform_scene(scenes[0], np.eye(4), np.eye(4), ws).tri_object
+    assert object_numbers([2, 0, 3]).tolist() == [0, 0, 2, 2, 2]
+
+
 @pytest.mark.parametrize("shading, model, computed", [("phong", "vtk", "none"), ("gouraud", "vtk", "none"),
                                                       ("flat", "vtk", "shown"), ("flat", "opengl", "all")])
 def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, model, computed, monkeypatch):

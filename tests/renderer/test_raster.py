@@ -610,3 +610,23 @@ def test_the_set_up_of_a_chunk_is_compiled_once(tmp_path):
                           text=True, timeout=600)
     assert done.returncode == 0, done.stderr[-3000:]
     assert done.stdout.split()[-1] == "1"
+
+
+@pytest.mark.parametrize("cull_back", [False, True])
+def test_the_mean_rows_of_a_batch_are_the_exact_mean_its_set_up_summed_chunk_by_chunk(cull_back):
+    """:func:`mean_rows` (which chooses a batch's kernel) is the mean over every triangle of
+    the rows it spans, clamped to the image, a triangle that draws nothing (no area, culled)
+    counting none: the set-up sums them per chunk of SETUP_CHUNK triangles as it goes."""
+    from renderer.raster import SETUP_CHUNK, mean_rows, set_up
+    rng = np.random.default_rng(12)
+    width, height = 40, 60
+    fixed = random_triangles(rng, 2 * int(SETUP_CHUNK) + 77, width, height).astype(np.int64)
+    fixed[:50] = fixed[:50, :1]  # no area
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, rng.uniform(0, 1, (len(fixed), 3, 1))], axis=2)
+    setup = set_up(fixed, window, height, cull_back)
+    spans = np.maximum(setup.rows[:, 1] - setup.rows[:, 0] + 1, 0)
+    assert len(setup.row_sums) == 3 and setup.row_sums.tolist() == [
+        int(spans[a:a + int(SETUP_CHUNK)].sum()) for a in range(0, len(spans), int(SETUP_CHUNK))]
+    assert mean_rows(setup) == pytest.approx(spans.mean(), rel=1e-12) and spans[:50].sum() == 0
+    assert (setup.rows[:, 1] <= height - 1).all() and spans.max() > 10
+    assert mean_rows(set_up(fixed[:0], window[:0], height, cull_back)) == 0.0

@@ -3,7 +3,8 @@ import numpy as np
 import pytest
 
 from renderer.raster import EMPTY
-from renderer.visible import visible_triangles
+from renderer.visible import number_in_sight, visible_triangles
+from renderer.workspace import Workspace
 
 
 def test_the_winners_are_numbered_as_the_rows_first_show_them():
@@ -37,3 +38,19 @@ def test_renumbering_is_a_bijection_in_the_order_of_first_sight(seed):
     np.testing.assert_array_equal(after == EMPTY, before == EMPTY)
     np.testing.assert_array_equal(ids[after[after >= 0]], before[before >= 0])
     np.testing.assert_array_equal(after[:, 1:] == after[:, :-1], before[:, 1:] == before[:, :-1])
+
+
+def test_numbering_puts_back_the_zeros_it_was_given_so_a_workspace_table_serves_the_next_frame():
+    """:func:`number_in_sight` is handed an all-zero table and leaves it all zero; frames of
+    other buffers through one workspace are numbered as each would be alone."""
+    rng = np.random.default_rng(7)
+    number, ids = np.zeros(300, np.int64), np.empty(300, np.int64)
+    tri_index = rng.integers(-1, 300, (20, 30)).astype(np.int32)
+    assert number_in_sight(tri_index, number, ids) > 0
+    assert not number.any()
+    ws = Workspace()
+    for count in (300, 120, 300, 500):
+        before = rng.integers(-1, count, (17, 23)).astype(np.int32)
+        alone, reused = before.copy(), before.copy()
+        np.testing.assert_array_equal(visible_triangles(reused, count, ws), visible_triangles(alone, count))
+        np.testing.assert_array_equal(reused, alone)

@@ -9,7 +9,7 @@ import sys
 
 import numpy as np
 
-from renderer.workspace import KEEPS_FREED_MEMORY, Workspace, empty
+from renderer.workspace import KEEPS_FREED_MEMORY, Workspace, empty, kept, zeros
 
 
 def test_an_array_is_reused_while_it_fits_and_replaced_when_it_does_not():
@@ -27,6 +27,32 @@ def test_a_shape_may_be_an_int_a_tuple_a_list_or_numbers_from_numpy():
     assert ws.array("a", np.int64(4), np.uint8).shape == (4,) and ws.array("b", 0).shape == (0,)
     assert ws.array("c", [2, np.int32(3)]).shape == (2, 3) and ws.array("d", np.array([3, 2])).shape == (3, 2)
     assert ws.array("e", (np.int64(5), 1), np.int64).dtype == np.int64
+
+
+def test_a_kept_table_is_built_again_only_when_its_key_changes():
+    ws, built = Workspace(), []
+
+    def build(n):
+        built.append(n)
+        return np.full(n, n)
+
+    a = ws.kept("objects", (3,), lambda: build(3))
+    assert ws.kept("objects", (3,), lambda: build(3)) is a and built == [3]
+    assert ws.kept("objects", (4,), lambda: build(4)).tolist() == [4] * 4 and built == [3, 4]
+    assert ws.kept("objects", (3,), lambda: build(3)) is not a and built == [3, 4, 3]
+    assert kept(None, "objects", (2,), lambda: build(2)).tolist() == [2, 2]
+
+
+def test_a_zeros_table_is_zero_when_made_and_grown_and_kept_as_its_callers_leave_it():
+    ws = Workspace()
+    a = ws.zeros("number", 5)
+    assert a.tolist() == [0] * 5 and a.dtype == np.int64
+    a[2] = 9
+    assert np.shares_memory(ws.zeros("number", 4), a) and ws.zeros("number", 4)[2] == 9, "not filled again"
+    a[2] = 0
+    grown = ws.zeros("number", 50)
+    assert not np.shares_memory(grown, a) and not grown.any()
+    assert ws.zeros("n32", 3, np.int32).dtype == np.int32 and not zeros(None, "x", 6).any()
 
 
 FRAMES = """
