@@ -274,17 +274,45 @@ def write_pieces(straddling, poly, bary, n, offsets, piece_offsets, source, piec
             p += 1
 
 
+class CornerIndex(NamedTuple):
+    """Where triangles' corners are, without writing them out: rows of a vertex table that
+    holds the ``n_vertices`` source vertices first and then the pieces' corners, three per
+    piece (as :func:`renderer.pipeline.clip_and_map` lays out the window-space table).
+    Triangle k is source triangle ``source[k]`` kept whole when ``piece[k]`` < 0 (its
+    corners: that triangle's rows of ``triangles`` (T, 3) int64), else piece ``piece[k]``;
+    source and piece (K,) int32 (:func:`corner_row`). Triangles given whole, three rows each,
+    are pieces 0 … K − 1 after no vertices (:meth:`of_whole`)."""
+
+    source: np.ndarray
+    piece: np.ndarray
+    triangles: np.ndarray
+    n_vertices: int
+
+    @staticmethod
+    def of_whole(count: int) -> "CornerIndex":
+        """``count`` triangles whose corners are rows 3k, 3k + 1, 3k + 2."""
+        return CornerIndex(np.zeros(count, np.int32), np.arange(count, dtype=np.int32), np.empty((0, 3), np.int64), 0)
+
+    def batch(self, a: int, b: int) -> "CornerIndex":
+        """Triangles a … b − 1 (views, no copy)."""
+        return self._replace(source=self.source[a:b], piece=self.piece[a:b])
+
+
+@njit(cache=True, inline="always")
+def corner_row(corners, k, v):
+    """The row of corner ``v`` of triangle ``k`` of a :class:`CornerIndex`."""
+    p = corners.piece[k]
+    return corners.triangles[corners.source[k], v] if p < 0 else corners.n_vertices + 3 * p + v
+
+
 @njit(cache=True)
-def corner_rows(source, piece, triangles, n_vertices, rows):
-    """The rows of each triangle's corners into ``rows`` (K, 3), in a table that holds the
-    ``n_vertices`` source vertices first and then the pieces' corners, three per piece (as
-    :func:`renderer.pipeline.clip_and_map` lays out the window-space table). One thread: in
-    parallel, a batch of 32k took 0.048 ms instead of 0.063, for 0.3 s more of a cold
-    start's compile."""
-    for k in range(source.shape[0]):
-        p = piece[k]
+def corner_rows(corners, rows):
+    """The rows of each triangle's corners (:class:`CornerIndex` ``corners``) written out into
+    ``rows`` (K, 3), for a caller that keeps them (the raster and shading read them through
+    :func:`corner_row` as they go)."""
+    for k in range(corners.source.shape[0]):
         for v in range(3):
-            rows[k, v] = triangles[source[k], v] if p < 0 else n_vertices + 3 * p + v
+            rows[k, v] = corner_row(corners, k, v)
 
 
 @njit(cache=True, parallel=True)

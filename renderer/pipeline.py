@@ -26,7 +26,7 @@ import numpy as np
 
 from lab.frame import Frame
 from renderer.camera import clipping_range, view_to_clip, world_to_view
-from renderer.clip import Clipped, clip_mesh, clipped_corners, corner_rows
+from renderer.clip import Clipped, CornerIndex, clip_mesh, clipped_corners, corner_rows
 from renderer.free_cores import threads_of_this_frame
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
@@ -121,7 +121,7 @@ class ClippedMesh:
     Each of the K triangles names its source triangle and, when clipping cut it, its piece
     (:class:`renderer.clip.Clipped`). Its corners are rows of vertex tables: rows 0 … N − 1
     are the scene's vertices (the corners of a triangle kept whole), rows N + 3p + v corner
-    v of piece p (:func:`renderer.clip.corner_rows`). A vertex shared by many triangles is
+    v of piece p (:class:`renderer.clip.CornerIndex`). A vertex shared by many triangles is
     mapped to the window once, which gives each of them the bits it would get alone.
 
     clip_source (K,) int32, piece (K,) int32 (−1: kept whole); clipped: the
@@ -145,16 +145,19 @@ class ClippedMesh:
         """The triangles picked by ``index`` (a mask or an order), in that order."""
         return replace(self, clip_source=self.clip_source[index], piece=self.piece[index])
 
-    def corner_rows(self, a: int = 0, b: int | None = None, ws=None, name="clipped.rows") -> np.ndarray:
-        """(b − a, 3) int64: the rows of the corners of triangles a … b − 1 in ``window`` and ``fixed``."""
-        source, piece = self.clip_source[a:b], self.piece[a:b]
-        rows = empty(ws, name, (len(source), 3), np.int64)
-        corner_rows(source, piece, self.geometry.triangles, len(self.geometry.verts_clip), rows)
+    def corner_index(self) -> CornerIndex:
+        """Where the triangles' corners are in ``window`` and ``fixed`` (:class:`renderer.clip.CornerIndex`)."""
+        return CornerIndex(self.clip_source, self.piece, self.geometry.triangles, len(self.geometry.verts_clip))
+
+    def corner_rows(self) -> np.ndarray:
+        """(K, 3) int64: the rows of the triangles' corners in ``window`` and ``fixed``, written out."""
+        rows = np.empty((self.count, 3), np.int64)
+        corner_rows(self.corner_index(), rows)
         return rows
 
-    def indexed(self, ws=None, name="clipped.rows") -> IndexedTriangles:
+    def indexed(self) -> IndexedTriangles:
         """The triangles as the raster takes them (:class:`renderer.raster.IndexedTriangles`)."""
-        return IndexedTriangles(lambda a, b: self.corner_rows(a, b, ws, name), self.count, self.fixed, self.window)
+        return IndexedTriangles(self.corner_index(), self.count, self.fixed, self.window)
 
     def corners_written_out(self, ws=None, name="clipped"):
         """``(tri_clip, clip_bary, clip_source)`` as :class:`ClippedTriangles` holds them."""
@@ -303,9 +306,7 @@ def shading_fragments(won: ClippedMesh, tri_index: np.ndarray, perspective: bool
                          source, perspective)
     tri_clip, clip_bary, clip_source = won.corners_written_out(ws, "visible")
     front, plane = empty(ws, "visible.front", won.count, np.bool_), empty(ws, "visible.plane", (won.count, 6))
-    for a in range(0, won.count, BATCH):
-        b = min(a + BATCH, won.count)
-        weight_planes(won.corner_rows(a, b, ws, "visible.rows"), won.fixed, won.window, front[a:b], plane[a:b])
+    weight_planes(won.corner_index(), won.fixed, won.window, front, plane)
     return fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, perspective)
 
 
@@ -369,7 +370,7 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
                    else np.zeros(clipped.count, np.bool_))
     opaque = clipped.take(~translucent) if translucent.any() else clipped
     backs_last = options.backs_last and rules.depth_test and not rules.cull_back
-    vis = rasterize_visibility(opaque.indexed(ws, "raster.corners"), width, height, rules.fill_rule, ws=ws,
+    vis = rasterize_visibility(opaque.indexed(), width, height, rules.fill_rule, ws=ws,
                                depth_test=rules.depth_test, cull_back=rules.cull_back, batch=BATCH if lean else None,
                                backs_last=backs_last)
     won = opaque.take(visible_triangles(vis.tri_index, opaque.count, ws)) if lean else opaque  # as vis.tri_index counts

@@ -40,12 +40,13 @@ triangle order (see :func:`rasterize`), and gives the same bytes as one thread.
 """
 from __future__ import annotations
 
-from typing import Callable, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 from renderer.jit import njit, prange
 from renderer.min_max import clamp, larger, smaller
 
+from renderer.clip import CornerIndex, corner_row
 from renderer.bands import BLOCK_ROWS, first_block_of_band, one_band_at_a_time, raster_bands
 from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibility, clear_band, depth_bits,
                                         depth_to_window, fill_columns, finish_band)
@@ -186,13 +187,12 @@ SETUP_CHUNK = np.uint64(1024)
 def setup_triangles(corners, fixed, window, height, cull_back, front, ccw, rows, plane, row_sums):
     """Per-triangle set-up, once: facing, counter-clockwise fixed vertices, rows, planes, into
     ``front``, ``ccw``, ``rows`` and ``plane``, and each chunk's rows into ``row_sums`` (see
-    :class:`TriangleSetup`). Triangle ``k``'s
-    corners are rows ``corners[k]`` of the vertex tables ``fixed`` (M, 2) int64 and
-    ``window`` (M, 3). With ``cull_back`` a back-facing (clockwise) triangle gets no rows:
-    back-face culling. :data:`SETUP_CHUNK` triangles to a parallel iteration, each chunk one
+    :class:`TriangleSetup`). The triangles' corners are rows (``corners``, a
+    :class:`~renderer.clip.CornerIndex`) of the vertex tables ``fixed`` (M, 2) int64 and
+    ``window`` (M, 3). With ``cull_back`` a back-facing (clockwise) triangle gets no rows: back-face culling. :data:`SETUP_CHUNK` triangles to a parallel iteration, each chunk one
     call of :func:`set_up_range`: numba's parallel passes then type a one-line loop body
     again, not the whole set-up (a cold start's compile 0.25 s less, the same frames)."""
-    for chunk in prange((np.uint64(corners.shape[0]) + SETUP_CHUNK - 1) // SETUP_CHUNK):
+    for chunk in prange((np.uint64(corners.source.shape[0]) + SETUP_CHUNK - 1) // SETUP_CHUNK):
         row_sums[chunk] = set_up_range(np.uint64(chunk), corners, fixed, window, height, cull_back, front, ccw, rows,
                                        plane)
 
@@ -205,15 +205,16 @@ def set_up_range(chunk, corners, fixed, window, height, cull_back, front, ccw, r
     array read a test for a negative value: measured 4 % slower). Returns the rows they span."""
     first = chunk * SETUP_CHUNK
     spanned = 0
-    for k in range(first, smaller(first + SETUP_CHUNK, np.uint64(corners.shape[0]))):
-        i0, i1, i2 = corners[k, 0], corners[k, 1], corners[k, 2]
+    for k in range(first, smaller(first + SETUP_CHUNK, np.uint64(corners.source.shape[0]))):
+        c0, c1, c2 = corner_row(corners, k, 0), corner_row(corners, k, 1), corner_row(corners, k, 2)
+        i0, i1, i2 = c0, c1, c2
         area = signed_area_corners(fixed, i0, i1, i2)
         front[k] = area > 0
         if area < 0:  # orient counter-clockwise for the span test; weights keep source order
             i1, i2 = i2, i1
         for c in range(2):
             ccw[k, 0, c], ccw[k, 1, c], ccw[k, 2, c] = fixed[i0, c], fixed[i1, c], fixed[i2, c]
-        a2 = triangle_plane(window, corners[k, 0], corners[k, 1], corners[k, 2], plane[k])
+        a2 = triangle_plane(window, c0, c1, c2, plane[k])
         y_min = smaller(smaller(fixed[i0, 1], fixed[i1, 1]), fixed[i2, 1])
         y_max = larger(larger(fixed[i0, 1], fixed[i1, 1]), fixed[i2, 1])
         rows[k, 0] = larger(0, ceil_div(y_min, SUBPIXEL))
@@ -230,8 +231,8 @@ def weight_planes(corners, fixed, window, front, plane):
     pixel: facing into ``front`` (K,) and the weights' plane — corner 0 and the edges to
     corners 1 and 2, the first six columns of :class:`TriangleSetup`'s ``plane`` — into
     ``plane`` (K, ≥ 6), the same bits (no depth plane, spans or rows: the raster is done)."""
-    for k in prange(corners.shape[0]):
-        i0, i1, i2 = corners[k, 0], corners[k, 1], corners[k, 2]
+    for k in prange(corners.source.shape[0]):
+        i0, i1, i2 = corner_row(corners, k, 0), corner_row(corners, k, 1), corner_row(corners, k, 2)
         front[k] = signed_area_corners(fixed, i0, i1, i2) > 0
         weights_plane(window, i0, i1, i2, plane[k])
 
@@ -498,11 +499,11 @@ however many triangles the scene has."""
 
 
 class IndexedTriangles(NamedTuple):
-    """Triangles as rows of vertex tables: ``corners(a, b)`` gives the corner rows (b − a, 3)
-    of triangles a … b − 1 (of ``count``) in ``fixed`` (M, 2) int64, x and y on the
+    """Triangles as rows of vertex tables: ``corners`` (:class:`~renderer.clip.CornerIndex`)
+    says where the ``count`` triangles' corners are in ``fixed`` (M, 2) int64, x and y on the
     1/256-pixel grid, and ``window`` (M, 3), window space (:mod:`renderer.window`)."""
 
-    corners: Callable[[int, int], np.ndarray]
+    corners: CornerIndex
     count: int
     fixed: np.ndarray
     window: np.ndarray
@@ -515,16 +516,15 @@ def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray) -> IndexedTri
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
     if len(tri_fixed) != len(tri_window):
         raise ValueError("tri_fixed and tri_window must hold the same triangles")
-    corners = np.arange(3 * len(tri_fixed), dtype=np.int64).reshape(-1, 3)
-    return IndexedTriangles(lambda a, b: corners[a:b], len(corners), tri_fixed.reshape(-1, 2),
+    return IndexedTriangles(CornerIndex.of_whole(len(tri_fixed)), len(tri_fixed), tri_fixed.reshape(-1, 2),
                             tri_window.reshape(-1, 3))
 
 
-def set_up_corners(corners: np.ndarray, fixed: np.ndarray, window: np.ndarray, height: int, cull_back: bool, ws=None,
+def set_up_corners(corners: CornerIndex, fixed: np.ndarray, window: np.ndarray, height: int, cull_back: bool, ws=None,
                    name="raster") -> TriangleSetup:
     """Allocate (in workspace ``ws`` under ``name``) and run :func:`setup_triangles` on the
-    triangles whose corners are rows ``corners`` (K, 3) of ``fixed`` (M, 2) and ``window`` (M, 3)."""
-    k_count = len(corners)
+    triangles whose corners ``corners`` names among the rows of ``fixed`` (M, 2) and ``window`` (M, 3)."""
+    k_count = len(corners.source)
     setup = TriangleSetup(front=empty(ws, f"{name}.front", k_count, np.bool_),
                           ccw=empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64),
                           rows=empty(ws, f"{name}.rows", (k_count, 2), np.int64),
@@ -538,7 +538,7 @@ def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back
            name="raster") -> TriangleSetup:
     """:func:`set_up_corners` of triangles given whole: (K, 3, 2) fixed and (K, 3, 3) window corners."""
     whole = whole_triangles(tri_fixed, tri_window)
-    return set_up_corners(whole.corners(0, whole.count), whole.fixed, whole.window, height, cull_back, ws, name)
+    return set_up_corners(whole.corners, whole.fixed, whole.window, height, cull_back, ws, name)
 
 
 def mean_rows(setup: TriangleSetup) -> float:
@@ -570,8 +570,8 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     tiles = new_tiles(height, width, ws) if backs_last and depth_test else NO_TILES
     step = max(count, 1) if batch is None else int(batch)
     for a in range(0, max(count, 1), step):
-        rows = np.ascontiguousarray(triangles.corners(a, min(a + step, count)), dtype=np.int64)
-        setup = set_up_corners(rows, triangles.fixed, triangles.window, height, cull_back, ws, "raster")
+        corners = triangles.corners.batch(a, min(a + step, count))
+        setup = set_up_corners(corners, triangles.fixed, triangles.window, height, cull_back, ws, "raster")
         with one_band_at_a_time():
             span = mean_rows(setup)  # chooses the kernel and the order, never the pixels
             kernel = rasterize_walking if span >= TALL_ROWS else rasterize
@@ -593,7 +593,7 @@ def rasterize_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, width: in
     """
     whole = whole_triangles(tri_fixed, tri_window)
     vis = rasterize_visibility(whole, width, height, fill_rule, n_bands, ws, depth_test, cull_back)
-    setup = set_up_corners(whole.corners(0, whole.count), whole.fixed, whole.window, height, cull_back)
+    setup = set_up_corners(whole.corners, whole.fixed, whole.window, height, cull_back)
     bary = np.zeros((height, width, 2))
     weights_of_visible(setup.plane, vis.tri_index, bary)
     return depth_to_window(vis.depth), vis.tri_index, bary, setup.front

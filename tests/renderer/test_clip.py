@@ -272,3 +272,20 @@ def test_a_mesh_inside_the_view_volume_never_reaches_the_cutting_passes(monkeypa
     assert calls == [] and clipped.source.tolist() == [0] and len(clipped.piece_clip) == 0
     clip.clip_mesh(verts, np.array([[0, 1, 2], [0, 1, 3]], np.int64))
     assert calls == ["cut_polygons", "write_pieces"]
+
+
+def test_a_corner_index_names_a_whole_triangles_vertices_and_a_pieces_own_rows():
+    """Corner v of triangle k: its source triangle's vertex when kept whole (piece −1), else
+    row N + 3p + v after the N source vertices; triangles given whole are pieces 0 … K − 1
+    after no vertices (rows 3k + v); a batch is a view of its triangles."""
+    from renderer.clip import CornerIndex, corner_rows
+    triangles = np.array([[0, 1, 2], [2, 1, 3], [3, 4, 0]], np.int64)
+    corners = CornerIndex(np.array([2, 0, 1, 1], np.int32), np.array([-1, 1, -1, 0], np.int32), triangles, 5)
+    rows = np.empty((4, 3), np.int64)
+    corner_rows(corners, rows)
+    assert rows.tolist() == [[3, 4, 0], [8, 9, 10], [2, 1, 3], [5, 6, 7]]
+    batch = corners.batch(1, 3)
+    assert np.shares_memory(batch.source, corners.source) and batch.piece.tolist() == [1, -1]
+    whole = np.empty((3, 3), np.int64)
+    corner_rows(CornerIndex.of_whole(3), whole)
+    assert whole.tolist() == [[0, 1, 2], [3, 4, 5], [6, 7, 8]]
