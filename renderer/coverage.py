@@ -19,8 +19,8 @@ import numpy as np
 from renderer.jit import njit
 from renderer.min_max import larger, smaller
 
-from renderer.raster import FILL_RULES, ceil_div, scanline_span, signed_area_fixed
-from renderer.window import SUBPIXEL
+from renderer.raster import FILL_RULES, ceil_div, scanline_span
+from renderer.window import SUBPIXEL, signed_area_fixed
 
 
 def window_to_fixed(xy) -> np.ndarray:

@@ -35,7 +35,9 @@ from renderer.raster import BATCH, IndexedTriangles, rasterize_visibility, weigh
 from renderer.reflection.materials import any_face_colour, any_flat
 from renderer.reflection.registry import material_table
 from renderer.plane_normals import face_normals, face_normals_of
-from renderer.shading import Fragments, ShadingInputs, fragments, painted_from_held, shade, to_8bit
+from renderer.shading import (EVERYTHING, HELD, Fragments, ShadingInputs, fragment_reads, fragments, shade, to_8bit,
+                              with_span_table)
+from renderer.spans import CornerTables
 from renderer.texture_sampling import texture_table
 from renderer.translucency import draw_translucent
 from renderer.transform import normal_matrix, transform_vertices
@@ -148,6 +150,12 @@ class ClippedMesh:
     def corner_index(self) -> CornerIndex:
         """Where the triangles' corners are in ``window`` and ``fixed`` (:class:`renderer.clip.CornerIndex`)."""
         return CornerIndex(self.clip_source, self.piece, self.geometry.triangles, len(self.geometry.verts_clip))
+
+    def corner_tables(self) -> CornerTables:
+        """The triangles' corners as clipping and the window mapping left them (:class:`renderer.spans.CornerTables`)."""
+        c = self.clipped
+        return CornerTables(*self.corner_index(), c.piece_clip, c.piece_bary, self.geometry.verts_clip, self.window,
+                            self.fixed)
 
     def corner_rows(self) -> np.ndarray:
         """(K, 3) int64: the rows of the triangles' corners in ``window`` and ``fixed``, written out."""
@@ -274,7 +282,7 @@ class Stages(NamedTuple):
         draw order (back to front for the painter's algorithm).
     tri_fixed : (K, 3, 2) int64, their x, y snapped to 1/256 pixel.
     clip_source : (K,) the source triangle (row of ``geometry.triangles``) each came from.
-    front : (K,) bool, counter-clockwise on screen (:func:`renderer.raster.signed_area_fixed` > 0).
+    front : (K,) bool, counter-clockwise on screen (:func:`renderer.window.signed_area_fixed` > 0).
     translucent : (K,) bool, drawn as translucent fragments instead of through the z-buffer.
     depth : (H, W) the z-buffer after the opaque pass: window depth on the 24-bit grid,
         1.0 where empty (the frame's ``depth``).
@@ -293,17 +301,21 @@ class Stages(NamedTuple):
 
 
 def shading_fragments(won: ClippedMesh, tri_index: np.ndarray, perspective: bool, ws=None,
-                      planes: bool = True) -> Fragments:
+                      reads: str = EVERYTHING) -> Fragments:
     """The :class:`renderer.shading.Fragments` of the triangles that won a pixel (``won``,
-    numbered as ``tri_index`` numbers them, :func:`renderer.visible.visible_triangles`):
-    their corners and weights written out, their facing and the planes of their weights
-    (:func:`renderer.raster.weight_planes`: shading reads no depth plane, rows or spans).
-    ``planes`` False: their source triangles only, the rest empty, for a frame painted from
-    held colours (:func:`renderer.shading.painted_from_held`), which reads nothing more."""
-    if not planes:
+    numbered as ``tri_index`` numbers them, :func:`renderer.visible.visible_triangles`), with
+    what shading reads of them (``reads``, :func:`renderer.shading.fragment_reads`):
+    :data:`~renderer.shading.EVERYTHING`, their corners and weights written out, their facing
+    and the planes of their weights (:func:`renderer.raster.weight_planes`: shading reads no
+    depth plane, rows or spans); :data:`~renderer.shading.SPAN_TABLE`, their source triangles
+    and span table, read straight from the clipped corners (:class:`renderer.spans.CornerTables`),
+    the rest empty; :data:`~renderer.shading.HELD`, their source triangles only, for a frame
+    painted from held colours."""
+    if reads != EVERYTHING:
         source = np.ascontiguousarray(won.clip_source, dtype=np.int64)
-        return fragments(tri_index, np.empty((0, 6)), np.empty(0, np.bool_), np.empty((0, 3, 4)), np.empty((0, 3, 3)),
-                         source, perspective)
+        frags = fragments(tri_index, np.empty((0, 6)), np.empty(0, np.bool_), np.empty((0, 3, 4)), np.empty((0, 3, 3)),
+                          source, perspective)
+        return frags if reads == HELD else with_span_table(frags, won.geometry, ws, clipped=won.corner_tables())
     tri_clip, clip_bary, clip_source = won.corners_written_out(ws, "visible")
     front, plane = empty(ws, "visible.front", won.count, np.bool_), empty(ws, "visible.plane", (won.count, 6))
     weight_planes(won.corner_index(), won.fixed, won.window, front, plane)
@@ -382,7 +394,7 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
     perspective = (options.interpolation or scene.render.interpolation) == "perspective"
     rgb = np.empty((height, width, 3), np.uint8)
-    frags = shading_fragments(won, vis.tri_index, perspective, ws, planes=not painted_from_held(inputs, options.spans))
+    frags = shading_fragments(won, vis.tri_index, perspective, ws, fragment_reads(inputs, options.spans))
     shade(frags, geo, inputs,
           to_8bit(np.asarray(scene.image.background)), rgb, spans=options.spans)
     coverage = vis.covered

@@ -7,7 +7,7 @@ and its screen-space barycentric weights — which :mod:`renderer.shading` light
 
 Rules, each in one place:
 
-- **Front face** (:func:`signed_area_fixed`): counter-clockwise in window coordinates
+- **Front face** (:func:`renderer.window.signed_area_fixed`): counter-clockwise in window coordinates
   (y up), OpenGL's default. Nothing is culled; back faces are drawn and lit two-sided.
 - **Scanline fill** (:func:`scanline_span`): for each pixel row, the span of pixel
   centres between the triangle's edges at the row's centre height. Coverage is decided
@@ -53,7 +53,7 @@ from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibilit
 from renderer.edge_functions import fill_narrow_rows, lanes_start
 from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
 from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, fragment_depth_floor, hidden_in_tiles, new_tiles
-from renderer.window import SUBPIXEL
+from renderer.window import SUBPIXEL, signed_area_corners
 from renderer.workspace import empty
 
 TOP_LEFT, BOTTOM_RIGHT = 0, 1  # fill rules; BOTTOM_RIGHT exists to show what a wrong rule does
@@ -68,7 +68,8 @@ class TriangleSetup(NamedTuple):
     pixel centres it may cover (none when first > last); plane (K, 11): x0, y0, e1x, e1y,
     e2x, e2y — vertex 0 and the edges to vertices 1 and 2 in float window coordinates, in
     the triangle's own vertex order (for the weights) — then the depth plane ax, ay, az,
-    zx, zy (:func:`depth_plane`); row_sums (C,) int64, for each chunk of
+    zx, zy (:func:`depth_plane`). A triangle between two rows of pixel centres (a quarter of
+    a 270k-triangle scan's at 512²) gets no ``ccw`` or depth plane: nothing reads them. row_sums (C,) int64, for each chunk of
     :data:`SETUP_CHUNK` triangles the rows they span together (for :func:`mean_rows`).
     """
 
@@ -83,12 +84,6 @@ class TriangleSetup(NamedTuple):
 def ceil_div(a, b):
     """⌈a / b⌉ for integers, b > 0."""
     return -((-a) // b)
-
-
-@njit(cache=True, inline="always")
-def signed_area_fixed(f):
-    """Twice the signed area of a fixed-point triangle (3, 2); > 0 = counter-clockwise (front)."""
-    return (f[1, 0] - f[0, 0]) * (f[2, 1] - f[0, 1]) - (f[2, 0] - f[0, 0]) * (f[1, 1] - f[0, 1])
 
 
 @njit(cache=True, inline="always")
@@ -150,14 +145,6 @@ def depth_plane(t, i0, i1, i2, out):
 
 
 @njit(cache=True, inline="always")
-def signed_area_corners(fixed, i0, i1, i2):
-    """:func:`signed_area_fixed` of the triangle whose corners are rows ``i0, i1, i2`` of a
-    fixed-point vertex table (M, 2)."""
-    return ((fixed[i1, 0] - fixed[i0, 0]) * (fixed[i2, 1] - fixed[i0, 1])
-            - (fixed[i2, 0] - fixed[i0, 0]) * (fixed[i1, 1] - fixed[i0, 1]))
-
-
-@njit(cache=True, inline="always")
 def weights_plane(window, i0, i1, i2, plane):
     """The plane of a triangle's screen-space weights into ``plane`` (≥ 6,): corner 0 (x0,
     y0) and the edges to corners 1 and 2, in the triangle's own corner order; the corners
@@ -166,17 +153,6 @@ def weights_plane(window, i0, i1, i2, plane):
     plane[0], plane[1] = x0, y0
     plane[2], plane[3] = window[i1, 0] - x0, window[i1, 1] - y0
     plane[4], plane[5] = window[i2, 0] - x0, window[i2, 1] - y0
-
-
-@njit(cache=True, inline="always")
-def triangle_plane(window, i0, i1, i2, plane):
-    """The float part of a triangle's set-up into ``plane`` (11,) (see :class:`TriangleSetup`):
-    the weights' plane (:func:`weights_plane`), then the depth plane; the corners are rows
-    ``i0, i1, i2`` of the window table (M, 3). Returns
-    twice its signed area in float (0.0: no weights can be worked out)."""
-    weights_plane(window, i0, i1, i2, plane)
-    depth_plane(window, i0, i1, i2, plane[6:])
-    return plane[2] * plane[5] - plane[4] * plane[3]
 
 
 SETUP_CHUNK = np.uint64(1024)
@@ -206,19 +182,21 @@ def set_up_range(chunk, corners, fixed, window, height, cull_back, front, ccw, r
     first = chunk * SETUP_CHUNK
     spanned = 0
     for k in range(first, smaller(first + SETUP_CHUNK, np.uint64(corners.source.shape[0]))):
-        c0, c1, c2 = corner_row(corners, k, 0), corner_row(corners, k, 1), corner_row(corners, k, 2)
-        i0, i1, i2 = c0, c1, c2
+        i0, i1, i2 = corner_row(corners, k, 0), corner_row(corners, k, 1), corner_row(corners, k, 2)
         area = signed_area_corners(fixed, i0, i1, i2)
         front[k] = area > 0
-        if area < 0:  # orient counter-clockwise for the span test; weights keep source order
-            i1, i2 = i2, i1
-        for c in range(2):
-            ccw[k, 0, c], ccw[k, 1, c], ccw[k, 2, c] = fixed[i0, c], fixed[i1, c], fixed[i2, c]
-        a2 = triangle_plane(window, c0, c1, c2, plane[k])
         y_min = smaller(smaller(fixed[i0, 1], fixed[i1, 1]), fixed[i2, 1])
         y_max = larger(larger(fixed[i0, 1], fixed[i1, 1]), fixed[i2, 1])
         rows[k, 0] = larger(0, ceil_div(y_min, SUBPIXEL))
         rows[k, 1] = smaller(height - 1, y_max // SUBPIXEL)
+        weights_plane(window, i0, i1, i2, plane[k])
+        if rows[k, 0] <= rows[k, 1]:  # a row of pixel centres: the depth plane and the corners for the spans
+            depth_plane(window, i0, i1, i2, plane[k, 6:])
+            if area < 0:  # orient counter-clockwise for the span test; weights keep source order
+                i1, i2 = i2, i1
+            for c in range(2):
+                ccw[k, 0, c], ccw[k, 1, c], ccw[k, 2, c] = fixed[i0, c], fixed[i1, c], fixed[i2, c]
+        a2 = plane[k, 2] * plane[k, 5] - plane[k, 4] * plane[k, 3]
         if area == 0 or a2 == 0.0 or (cull_back and area < 0):  # nothing to draw, or a culled back face
             rows[k, 0], rows[k, 1] = 1, 0
         spanned += larger(rows[k, 1] - rows[k, 0] + 1, 0)

@@ -40,7 +40,8 @@ from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
                                          span_normal_only, spans_apply, store_run, store_span)
-from renderer.spans import LANES, SpanTable, face_toward_viewer, span_points, span_setup, span_table, whole_lanes
+from renderer.spans import (LANES, SpanTable, face_toward_viewer, span_points, span_setup, span_table, span_table_of_corners,
+                            whole_lanes)
 from renderer.texture_sampling import modulate_texels, sample_texture
 from renderer.workspace import empty, thread_workspace
 
@@ -140,15 +141,17 @@ def fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, perspec
                      np.empty((0, 11)), np.empty((0, 22), np.float32), np.empty(0, np.int64))
 
 
-def with_span_table(frags: Fragments, geo, ws=None, name: str = "fragments") -> Fragments:
-    """``frags`` with their span table (:func:`renderer.spans.span_table`), in workspace
-    buffers named after ``name``. Built where the shading kernels need it, not before: a frame
-    painted from its held colours (:func:`renderer.held_colours.paint_rows`) neither builds
-    nor compiles it."""
+def with_span_table(frags: Fragments, geo, ws=None, name: str = "fragments", clipped=None) -> Fragments:
+    """``frags`` with their span table (:func:`renderer.spans.span_table`) in workspace buffers
+    named after ``name``, built where the kernels need it (a frame painted from held colours
+    neither builds nor compiles it); read from ``clipped`` (:class:`renderer.spans.CornerTables`)
+    if given (:func:`renderer.spans.span_table_of_corners`: the same table, no planes or corners read)."""
     k = len(frags.clip_source)
     table = SpanTable(empty(ws, f"{name}.span_weights", (k, 11)), empty(ws, f"{name}.span_corners", (k, 22), np.float32),
                       empty(ws, f"{name}.span_object", k, np.int64))
-    if k:
+    if k and clipped is not None:
+        span_table_of_corners(clipped, frags.perspective, geo, *table)
+    elif k:
         span_table(frags.plane, frags.front, frags.tri_clip, frags.clip_bary, frags.clip_source, frags.perspective,
                    geo, *table)
     return frags._replace(span_weights=table.weights, span_corners=table.corners, span_object=table.object)
@@ -556,6 +559,18 @@ def painted_from_held(inputs: ShadingInputs, spans: bool = True) -> bool:
             and all_held(inputs.materials, inputs.lights))
 
 
+HELD, SPAN_TABLE, EVERYTHING = "source triangles", "span table", "everything"
+
+
+def fragment_reads(inputs: ShadingInputs, spans: bool = True) -> str:
+    """What :func:`shade` reads of the fragments' tables: :data:`HELD`, their source triangles
+    (:func:`painted_from_held`); :data:`SPAN_TABLE`, those and the span table (every object
+    :func:`span_covers`: :func:`shade_rows_lit_spans`); else :data:`EVERYTHING`."""
+    if painted_from_held(inputs, spans):
+        return HELD
+    return SPAN_TABLE if spans and spans_cover_all(inputs.materials, inputs.textures, inputs.lights) else EVERYTHING
+
+
 def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, rgb: np.ndarray,
           n_bands: int | None = None, spans: bool = True) -> None:
     """Shade the visibility buffer ``frags`` into ``rgb`` (H, W, 3) uint8, window rows (the
@@ -564,13 +579,15 @@ def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, 
     path, for tests)."""
     height = frags.tri_index.shape[0]
     n_bands = shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height))
-    if painted_from_held(inputs, spans):
+    reads = fragment_reads(inputs, spans)
+    if reads == HELD:
         held = held_colour_table(frags, geo, inputs.materials, inputs.lights, inputs.lit, thread_workspace())
         with one_band_at_a_time():
             paint_rows(frags.tri_index, held, background, n_bands, rgb)
-    elif spans and spans_cover_all(inputs.materials, inputs.textures, inputs.lights):
+    elif reads == SPAN_TABLE:
         held = held_colour_table(frags, geo, inputs.materials, inputs.lights, inputs.lit, thread_workspace())
-        frags = with_span_table(frags, geo, thread_workspace())  # outside one_band_at_a_time: a loop over triangles
+        if len(frags.span_object) != len(frags.clip_source):  # no table yet; outside one_band_at_a_time (over triangles)
+            frags = with_span_table(frags, geo, thread_workspace())
         with one_band_at_a_time():
             shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, held, background, n_bands, rgb)
     else:

@@ -34,7 +34,9 @@ from typing import NamedTuple
 
 import numpy as np
 
+from renderer.clip import corner_row
 from renderer.jit import njit, prange
+from renderer.window import signed_area_corners
 
 F0, F1 = np.float32(0.0), np.float32(1.0)
 
@@ -61,28 +63,89 @@ class SpanTable(NamedTuple):
 @njit(cache=True, parallel=True)
 def span_table(plane, front, tri_clip, clip_bary, clip_source, perspective, geo, weights, corners, objects):
     """Fill :class:`SpanTable`'s ``weights``, ``corners`` and ``objects`` for every clipped
-    triangle; each row is written by its own iteration (the same bytes on any number of threads)."""
-    with_face = geo.face_normals.shape[0] > 0
+    triangle of written-out tables (:class:`renderer.shading.Fragments`' ``plane``, ``front``,
+    ``tri_clip``, ``clip_bary``, ``clip_source``); each row is written by its own iteration
+    (the same bytes on any number of threads)."""
     for k in prange(plane.shape[0]):
-        x0, y0 = plane[k, 0], plane[k, 1]
-        e1x, e1y, e2x, e2y = plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5]
-        anchor = np.floor(x0)
-        weights[k, 0], weights[k, 1], weights[k, 2] = anchor, anchor + 0.5 - x0, y0
-        weights[k, 3], weights[k, 4], weights[k, 5], weights[k, 6] = e1x, e1y, e2x, e2y
-        weights[k, 7] = 1.0 / (e1x * e2y - e2x * e1y)
-        for i in range(3):
-            weights[k, 8 + i] = 1.0 / tri_clip[k, i, 3] if perspective else 1.0
-        s = clip_source[k]
-        i0, i1, i2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
-        for i in range(3):
-            p = clipped_vertex(geo.verts_view, k, i, clip_bary, i0, i1, i2)
-            n = clipped_vertex(geo.normals_view, k, i, clip_bary, i0, i1, i2)
-            for c in range(3):
-                corners[k, 3 * i + c], corners[k, 9 + 3 * i + c] = p[c], n[c]
-        fx, fy, fz = face_toward_viewer(geo, s) if with_face else (0.0, 0.0, 0.0)
-        corners[k, 18], corners[k, 19], corners[k, 20] = np.float32(fx), np.float32(fy), np.float32(fz)
-        corners[k, 21] = F1 if front[k] else -F1
-        objects[k] = geo.tri_object[s]
+        edges = (plane[k, 0], plane[k, 1], plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5])
+        w = (tri_clip[k, 0, 3], tri_clip[k, 1, 3], tri_clip[k, 2, 3]) if perspective else (1.0, 1.0, 1.0)
+        mix = ((clip_bary[k, 0, 0], clip_bary[k, 0, 1], clip_bary[k, 0, 2]),
+               (clip_bary[k, 1, 0], clip_bary[k, 1, 1], clip_bary[k, 1, 2]),
+               (clip_bary[k, 2, 0], clip_bary[k, 2, 1], clip_bary[k, 2, 2]))
+        table_row(k, clip_source[k], edges, w, mix, front[k], geo, weights, corners, objects)
+
+
+class CornerTables(NamedTuple):
+    """Clipped triangles as clipping and the window mapping left them, not written out: the
+    fields of a :class:`renderer.clip.CornerIndex` (``source``, ``piece``, ``triangles``,
+    ``n_vertices``: where each one's corners are, :func:`renderer.clip.corner_row`), the
+    pieces' clip-space corners ``piece_clip`` (P, 3, 4) and weights in their source triangle
+    ``piece_bary`` (P, 3, 3) (:class:`renderer.clip.Clipped`), the scene's ``verts_clip`` (N, 4),
+    and the rows in window space, ``window`` (M, 3) and ``fixed`` (M, 2) int64. Flat, not a
+    CornerIndex inside: numba passes no tuple inside a tuple into a parallel loop."""
+
+    source: np.ndarray
+    piece: np.ndarray
+    triangles: np.ndarray
+    n_vertices: int
+    piece_clip: np.ndarray
+    piece_bary: np.ndarray
+    verts_clip: np.ndarray
+    window: np.ndarray
+    fixed: np.ndarray
+
+
+@njit(cache=True, parallel=True)
+def span_table_of_corners(clipped, perspective, geo, weights, corners, objects):
+    """:func:`span_table` read straight from ``clipped`` (:class:`CornerTables`): each triangle's
+    weights' plane and facing from its corners' window rows (as
+    :func:`renderer.raster.weight_planes` works them out), its corners' clip w and weights
+    from the scene's vertices (unit weights) or its piece (as
+    :func:`renderer.clip.gather_corners` writes them out) — the same bits, without writing
+    those tables out and reading them back (a 270k-triangle scan at 512²: 6 ms a frame)."""
+    window, fixed = clipped.window, clipped.fixed
+    for k in prange(clipped.source.shape[0]):
+        i0, i1, i2 = corner_row(clipped, k, 0), corner_row(clipped, k, 1), corner_row(clipped, k, 2)
+        x0, y0 = window[i0, 0], window[i0, 1]
+        edges = (x0, y0, window[i1, 0] - x0, window[i1, 1] - y0, window[i2, 0] - x0, window[i2, 1] - y0)
+        s, p = clipped.source[k], clipped.piece[k]
+        if p < 0:
+            v0, v1, v2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
+            w = (clipped.verts_clip[v0, 3], clipped.verts_clip[v1, 3], clipped.verts_clip[v2, 3])
+            mix = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+        else:
+            c, b = clipped.piece_clip, clipped.piece_bary
+            w = (c[p, 0, 3], c[p, 1, 3], c[p, 2, 3])
+            mix = ((b[p, 0, 0], b[p, 0, 1], b[p, 0, 2]), (b[p, 1, 0], b[p, 1, 1], b[p, 1, 2]),
+                   (b[p, 2, 0], b[p, 2, 1], b[p, 2, 2]))
+        table_row(k, s, edges, w if perspective else (1.0, 1.0, 1.0), mix, signed_area_corners(fixed, i0, i1, i2) > 0,
+                  geo, weights, corners, objects)
+
+
+@njit(cache=True, inline="always")
+def table_row(k, s, edges, w, mix, front, geo, weights, corners, objects):
+    """Row ``k`` of the span table (``weights``, ``corners``, ``objects``) for a clipped triangle
+    of source triangle ``s``: ``edges`` its weights' plane (x0, y0, e1x, e1y, e2x, e2y,
+    :func:`renderer.raster.weights_plane`), ``w`` its corners' clip w (1 when screen-linear),
+    ``mix`` each corner's weights in the source triangle, ``front`` its facing. (The tables
+    come one by one, not as a tuple: numba loses writes made through a tuple's arrays inside
+    ``prange``, numba issues #5872, #7135.)"""
+    x0, y0, e1x, e1y, e2x, e2y = edges
+    anchor = np.floor(x0)
+    weights[k, 0], weights[k, 1], weights[k, 2] = anchor, anchor + 0.5 - x0, y0
+    weights[k, 3], weights[k, 4], weights[k, 5], weights[k, 6] = e1x, e1y, e2x, e2y
+    weights[k, 7] = 1.0 / (e1x * e2y - e2x * e1y)
+    weights[k, 8], weights[k, 9], weights[k, 10] = 1.0 / w[0], 1.0 / w[1], 1.0 / w[2]
+    i0, i1, i2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
+    for i in range(3):
+        p = mixed_vertex(geo.verts_view, mix[i], i0, i1, i2)
+        n = mixed_vertex(geo.normals_view, mix[i], i0, i1, i2)
+        for c in range(3):
+            corners[k, 3 * i + c], corners[k, 9 + 3 * i + c] = p[c], n[c]
+    fx, fy, fz = face_toward_viewer(geo, s) if geo.face_normals.shape[0] > 0 else (0.0, 0.0, 0.0)
+    corners[k, 18], corners[k, 19], corners[k, 20] = np.float32(fx), np.float32(fy), np.float32(fz)
+    corners[k, 21] = F1 if front else -F1
+    objects[k] = geo.tri_object[s]
 
 
 @njit(cache=True, inline="always")
@@ -105,7 +168,14 @@ def table_weights(t, k, row, c0):
 def clipped_vertex(values, k, i, cb, i0, i1, i2):
     """``values`` (per source vertex, 3 columns) at vertex ``i`` of clipped triangle ``k``, as
     float32: its clipping weights ``cb[k, i]`` mix the source triangle's three vertices."""
-    w0, w1, w2 = cb[k, i, 0], cb[k, i, 1], cb[k, i, 2]
+    return mixed_vertex(values, (cb[k, i, 0], cb[k, i, 1], cb[k, i, 2]), i0, i1, i2)
+
+
+@njit(cache=True, inline="always")
+def mixed_vertex(values, mix, i0, i1, i2):
+    """``values`` (per source vertex, 3 columns) mixed by the weights ``mix`` of the source
+    triangle's vertices ``i0, i1, i2``, as float32 (a clipped corner's value)."""
+    w0, w1, w2 = mix
     return (np.float32(w0 * values[i0, 0] + w1 * values[i1, 0] + w2 * values[i2, 0]),
             np.float32(w0 * values[i0, 1] + w1 * values[i1, 1] + w2 * values[i2, 1]),
             np.float32(w0 * values[i0, 2] + w1 * values[i1, 2] + w2 * values[i2, 2]))

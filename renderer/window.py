@@ -51,6 +51,21 @@ def window_into(points_clip, width, height, window, fixed):
         fixed[i, 1] = np.int64(np.rint((y - 0.5) * SUBPIXEL))
 
 
+@njit(cache=True, inline="always")
+def signed_area_fixed(f):
+    """Twice the signed area of a fixed-point triangle (3, 2), in the grid's units; > 0 =
+    counter-clockwise in window coordinates (y up): a front face (OpenGL's default)."""
+    return (f[1, 0] - f[0, 0]) * (f[2, 1] - f[0, 1]) - (f[2, 0] - f[0, 0]) * (f[1, 1] - f[0, 1])
+
+
+@njit(cache=True, inline="always")
+def signed_area_corners(fixed, i0, i1, i2):
+    """:func:`signed_area_fixed` of the triangle whose corners are rows ``i0, i1, i2`` of a
+    fixed-point vertex table (M, 2)."""
+    return ((fixed[i1, 0] - fixed[i0, 0]) * (fixed[i2, 1] - fixed[i0, 1])
+            - (fixed[i2, 0] - fixed[i0, 0]) * (fixed[i1, 1] - fixed[i0, 1]))
+
+
 def window_rows_to_image_rows(a: np.ndarray) -> np.ndarray:
     """Window row j (y up) → image row H − 1 − j (row 0 at the top). The only y flip.
 

@@ -630,3 +630,28 @@ def test_the_mean_rows_of_a_batch_are_the_exact_mean_its_set_up_summed_chunk_by_
     assert mean_rows(setup) == pytest.approx(spans.mean(), rel=1e-12) and spans[:50].sum() == 0
     assert (setup.rows[:, 1] <= height - 1).all() and spans.max() > 10
     assert mean_rows(set_up(fixed[:0], window[:0], height, cull_back)) == 0.0
+
+
+def test_a_triangle_between_two_rows_of_pixel_centres_is_set_up_only_as_far_as_it_is_read():
+    """A triangle that covers no row of pixel centres gets its facing, rows (none) and weights'
+    plane (translucent spans read it), not its counter-clockwise corners or depth plane,
+    which only drawing reads; every other triangle gets all of them, as set up one by one."""
+    from renderer.raster import depth_plane, set_up, weights_plane
+    rng = np.random.default_rng(21)
+    corner = rng.integers(0, 30 * SUBPIXEL, (600, 1, 2))
+    fixed = (corner + rng.integers(-SUBPIXEL, SUBPIXEL, (600, 3, 2))).astype(np.int64)  # about a pixel across
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, rng.uniform(0, 1, (600, 3, 1))], axis=2)
+    setup = set_up(fixed, window, 30, False)
+    has_rows = setup.rows[:, 0] <= setup.rows[:, 1]
+    assert 50 < has_rows.sum() < 550
+    flat_window = window.reshape(-1, 3)
+    for k in range(len(fixed)):
+        plane = np.zeros(11)
+        weights_plane(flat_window, 3 * k, 3 * k + 1, 3 * k + 2, plane)
+        depth_plane(flat_window, 3 * k, 3 * k + 1, 3 * k + 2, plane[6:])
+        assert setup.plane[k, :6].tobytes() == plane[:6].tobytes(), k
+        if has_rows[k]:
+            assert setup.plane[k, 6:].tobytes() == plane[6:].tobytes(), k
+            (x0, y0), (x1, y1), (x2, y2) = fixed[k]
+            clockwise = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0) < 0
+            assert (setup.ccw[k] == (fixed[k, [0, 2, 1]] if clockwise else fixed[k])).all(), k

@@ -17,7 +17,7 @@ from lab.normals import angle_weighted_normals
 from lab.shapes import cube, cylinder, icosphere, quad
 from renderer import RenderOptions, pipeline, render
 from renderer.pipeline import SceneGeometry
-from renderer.shading import fragments, shade, span_tcoords, with_span_table
+from renderer.shading import EVERYTHING, SPAN_TABLE, fragments, shade, span_tcoords, with_span_table
 from renderer.spans import clipped_vertex, face_toward_viewer, table_weights
 from .single_thread import one_thread
 from .texture_filters import by_definition
@@ -164,6 +164,32 @@ def test_the_span_table_holds_the_bits_a_span_would_work_out(perspective, parall
                             np.float32)
         assert frags.span_corners[k].tobytes() == expected.tobytes(), k
         assert frags.span_object[k] == geo.tri_object[s]
+
+
+@pytest.mark.parametrize("shading", ["phong", "flat"])
+@pytest.mark.parametrize("interpolation", ["perspective", "screen"])
+def test_the_span_table_read_from_the_clipped_corners_is_the_one_the_written_out_tables_give(shading, interpolation,
+                                                                                            monkeypatch):
+    """A frame every object of which is lit in spans reads the span table only: the pipeline
+    builds it straight from the clipped corners (``span_table_of_corners``, triangles kept
+    whole and pieces cut by the near plane and the viewport) and writes out no planes or
+    corners; the table is, bit for bit, the one of the written-out tables."""
+    won_seen = []
+    real = pipeline.shading_fragments
+
+    def spy(won, tri_index, perspective, ws=None, reads=EVERYTHING):
+        won_seen.append((won, tri_index.copy(), perspective, reads))
+        return real(won, tri_index, perspective, ws, reads)
+
+    monkeypatch.setattr(pipeline, "shading_fragments", spy)
+    render(scene(shading, LIGHTS["one-scene-light"], interpolation=interpolation))
+    won, tri_index, perspective, reads = won_seen[-1]
+    assert reads == SPAN_TABLE and (won.piece >= 0).any() and (won.piece < 0).any()
+    written = with_span_table(real(won, tri_index, perspective, None, EVERYTHING), won.geometry)
+    direct = real(won, tri_index, perspective, None, SPAN_TABLE)
+    assert len(direct.plane) == len(direct.tri_clip) == 0 < len(direct.span_object) == len(written.clip_source)
+    for name in ("span_weights", "span_corners", "span_object", "clip_source"):
+        assert getattr(direct, name).tobytes() == getattr(written, name).tobytes(), name
 
 
 def test_one_thread_and_two_give_the_same_bytes():
