@@ -152,7 +152,8 @@ class ClippedMesh:
         return CornerIndex(self.clip_source, self.piece, self.geometry.triangles, len(self.geometry.verts_clip))
 
     def corner_tables(self) -> CornerTables:
-        """The triangles' corners as clipping and the window mapping left them (:class:`renderer.spans.CornerTables`)."""
+        """The triangles' corners as clipping and the window mapping left them
+        (:class:`renderer.spans.CornerTables`)."""
         c = self.clipped
         return CornerTables(*self.corner_index(), c.piece_clip, c.piece_bary, self.geometry.verts_clip, self.window,
                             self.fixed)
@@ -165,7 +166,7 @@ class ClippedMesh:
 
     def indexed(self) -> IndexedTriangles:
         """The triangles as the raster takes them (:class:`renderer.raster.IndexedTriangles`)."""
-        return IndexedTriangles(self.corner_index(), self.count, self.fixed, self.window)
+        return IndexedTriangles(self.corner_index(), self.fixed, self.window)
 
     def corners_written_out(self, ws=None, name="clipped"):
         """``(tri_clip, clip_bary, clip_source)`` as :class:`ClippedTriangles` holds them."""
@@ -312,7 +313,8 @@ def shading_fragments(won: ClippedMesh, tri_index: np.ndarray, perspective: bool
     the rest empty; :data:`~renderer.shading.HELD`, their source triangles only, for a frame
     painted from held colours."""
     if reads != EVERYTHING:
-        source = np.ascontiguousarray(won.clip_source, dtype=np.int64)
+        source = empty(ws, "visible.source", won.count, np.int64)
+        source[:] = won.clip_source
         frags = fragments(tri_index, np.empty((0, 6)), np.empty(0, np.bool_), np.empty((0, 3, 4)), np.empty((0, 3, 3)),
                           source, perspective)
         return frags if reads == HELD else with_span_table(frags, won.geometry, ws, clipped=won.corner_tables())

@@ -53,7 +53,7 @@ from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibilit
 from renderer.edge_functions import fill_narrow_rows, lanes_start
 from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
 from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, fragment_depth_floor, hidden_in_tiles, new_tiles
-from renderer.window import SUBPIXEL, signed_area_corners
+from renderer.window import SUBPIXEL, signed_area_corners, window_edges
 from renderer.workspace import empty
 
 TOP_LEFT, BOTTOM_RIGHT = 0, 1  # fill rules; BOTTOM_RIGHT exists to show what a wrong rule does
@@ -69,8 +69,9 @@ class TriangleSetup(NamedTuple):
     e2x, e2y — vertex 0 and the edges to vertices 1 and 2 in float window coordinates, in
     the triangle's own vertex order (for the weights) — then the depth plane ax, ay, az,
     zx, zy (:func:`depth_plane`). A triangle between two rows of pixel centres (a quarter of
-    a 270k-triangle scan's at 512²) gets no ``ccw`` or depth plane: nothing reads them. row_sums (C,) int64, for each chunk of
-    :data:`SETUP_CHUNK` triangles the rows they span together (for :func:`mean_rows`).
+    a 270k-triangle scan's at 512²) gets no ``ccw`` or depth plane: nothing reads them.
+    row_sums (C,) int64: for each chunk of :data:`SETUP_CHUNK` triangles the rows they span
+    together (for :func:`mean_rows`).
     """
 
     front: np.ndarray
@@ -146,13 +147,9 @@ def depth_plane(t, i0, i1, i2, out):
 
 @njit(cache=True, inline="always")
 def weights_plane(window, i0, i1, i2, plane):
-    """The plane of a triangle's screen-space weights into ``plane`` (≥ 6,): corner 0 (x0,
-    y0) and the edges to corners 1 and 2, in the triangle's own corner order; the corners
-    are rows ``i0, i1, i2`` of the window table (M, 3)."""
-    x0, y0 = window[i0, 0], window[i0, 1]
-    plane[0], plane[1] = x0, y0
-    plane[2], plane[3] = window[i1, 0] - x0, window[i1, 1] - y0
-    plane[4], plane[5] = window[i2, 0] - x0, window[i2, 1] - y0
+    """The plane of a triangle's screen-space weights into ``plane`` (≥ 6,): its
+    :func:`renderer.window.window_edges`, the corners rows ``i0, i1, i2`` of the window table (M, 3)."""
+    plane[0], plane[1], plane[2], plane[3], plane[4], plane[5] = window_edges(window, i0, i1, i2)
 
 
 SETUP_CHUNK = np.uint64(1024)
@@ -165,7 +162,8 @@ def setup_triangles(corners, fixed, window, height, cull_back, front, ccw, rows,
     ``front``, ``ccw``, ``rows`` and ``plane``, and each chunk's rows into ``row_sums`` (see
     :class:`TriangleSetup`). The triangles' corners are rows (``corners``, a
     :class:`~renderer.clip.CornerIndex`) of the vertex tables ``fixed`` (M, 2) int64 and
-    ``window`` (M, 3). With ``cull_back`` a back-facing (clockwise) triangle gets no rows: back-face culling. :data:`SETUP_CHUNK` triangles to a parallel iteration, each chunk one
+    ``window`` (M, 3). With ``cull_back`` a back-facing (clockwise) triangle gets no rows:
+    back-face culling. :data:`SETUP_CHUNK` triangles to a parallel iteration, each chunk one
     call of :func:`set_up_range`: numba's parallel passes then type a one-line loop body
     again, not the whole set-up (a cold start's compile 0.25 s less, the same frames)."""
     for chunk in prange((np.uint64(corners.source.shape[0]) + SETUP_CHUNK - 1) // SETUP_CHUNK):
@@ -478,13 +476,17 @@ however many triangles the scene has."""
 
 class IndexedTriangles(NamedTuple):
     """Triangles as rows of vertex tables: ``corners`` (:class:`~renderer.clip.CornerIndex`)
-    says where the ``count`` triangles' corners are in ``fixed`` (M, 2) int64, x and y on the
+    says where the triangles' corners are in ``fixed`` (M, 2) int64, x and y on the
     1/256-pixel grid, and ``window`` (M, 3), window space (:mod:`renderer.window`)."""
 
     corners: CornerIndex
-    count: int
     fixed: np.ndarray
     window: np.ndarray
+
+    @property
+    def count(self) -> int:
+        """How many triangles."""
+        return len(self.corners.source)
 
 
 def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray) -> IndexedTriangles:
@@ -494,8 +496,7 @@ def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray) -> IndexedTri
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
     if len(tri_fixed) != len(tri_window):
         raise ValueError("tri_fixed and tri_window must hold the same triangles")
-    return IndexedTriangles(CornerIndex.of_whole(len(tri_fixed)), len(tri_fixed), tri_fixed.reshape(-1, 2),
-                            tri_window.reshape(-1, 3))
+    return IndexedTriangles(CornerIndex.of_whole(len(tri_fixed)), tri_fixed.reshape(-1, 2), tri_window.reshape(-1, 3))
 
 
 def set_up_corners(corners: CornerIndex, fixed: np.ndarray, window: np.ndarray, height: int, cull_back: bool, ws=None,

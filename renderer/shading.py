@@ -40,8 +40,8 @@ from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
                                          span_normal_only, spans_apply, store_run, store_span)
-from renderer.spans import (LANES, SpanTable, face_toward_viewer, span_points, span_setup, span_table, span_table_of_corners,
-                            whole_lanes)
+from renderer.spans import (LANES, SpanTable, face_toward_viewer, span_points, span_setup, span_table,
+                            span_table_of_corners, whole_lanes)
 from renderer.texture_sampling import modulate_texels, sample_texture
 from renderer.workspace import empty, thread_workspace
 
@@ -145,7 +145,8 @@ def with_span_table(frags: Fragments, geo, ws=None, name: str = "fragments", cli
     """``frags`` with their span table (:func:`renderer.spans.span_table`) in workspace buffers
     named after ``name``, built where the kernels need it (a frame painted from held colours
     neither builds nor compiles it); read from ``clipped`` (:class:`renderer.spans.CornerTables`)
-    if given (:func:`renderer.spans.span_table_of_corners`: the same table, no planes or corners read)."""
+    if given (:func:`renderer.spans.span_table_of_corners`: the same table, read from no planes
+    or written-out corners)."""
     k = len(frags.clip_source)
     table = SpanTable(empty(ws, f"{name}.span_weights", (k, 11)), empty(ws, f"{name}.span_corners", (k, 22), np.float32),
                       empty(ws, f"{name}.span_object", k, np.int64))
@@ -586,7 +587,7 @@ def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, 
             paint_rows(frags.tri_index, held, background, n_bands, rgb)
     elif reads == SPAN_TABLE:
         held = held_colour_table(frags, geo, inputs.materials, inputs.lights, inputs.lit, thread_workspace())
-        if len(frags.span_object) != len(frags.clip_source):  # no table yet; outside one_band_at_a_time (over triangles)
+        if len(frags.span_object) != len(frags.clip_source):  # none yet; outside one_band_at_a_time
             frags = with_span_table(frags, geo, thread_workspace())
         with one_band_at_a_time():
             shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, held, background, n_bands, rgb)

@@ -36,7 +36,7 @@ import numpy as np
 
 from renderer.clip import corner_row
 from renderer.jit import njit, prange
-from renderer.window import signed_area_corners
+from renderer.window import signed_area_corners, window_edges
 
 F0, F1 = np.float32(0.0), np.float32(1.0)
 
@@ -103,23 +103,20 @@ def span_table_of_corners(clipped, perspective, geo, weights, corners, objects):
     from the scene's vertices (unit weights) or its piece (as
     :func:`renderer.clip.gather_corners` writes them out) — the same bits, without writing
     those tables out and reading them back (a 270k-triangle scan at 512²: 6 ms a frame)."""
-    window, fixed = clipped.window, clipped.fixed
+    fixed = clipped.fixed
     for k in prange(clipped.source.shape[0]):
         i0, i1, i2 = corner_row(clipped, k, 0), corner_row(clipped, k, 1), corner_row(clipped, k, 2)
-        x0, y0 = window[i0, 0], window[i0, 1]
-        edges = (x0, y0, window[i1, 0] - x0, window[i1, 1] - y0, window[i2, 0] - x0, window[i2, 1] - y0)
         s, p = clipped.source[k], clipped.piece[k]
-        if p < 0:
-            v0, v1, v2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
-            w = (clipped.verts_clip[v0, 3], clipped.verts_clip[v1, 3], clipped.verts_clip[v2, 3])
+        if p < 0:  # kept whole: its corner rows are its vertices
+            w = (clipped.verts_clip[i0, 3], clipped.verts_clip[i1, 3], clipped.verts_clip[i2, 3])
             mix = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
         else:
             c, b = clipped.piece_clip, clipped.piece_bary
             w = (c[p, 0, 3], c[p, 1, 3], c[p, 2, 3])
             mix = ((b[p, 0, 0], b[p, 0, 1], b[p, 0, 2]), (b[p, 1, 0], b[p, 1, 1], b[p, 1, 2]),
                    (b[p, 2, 0], b[p, 2, 1], b[p, 2, 2]))
-        table_row(k, s, edges, w if perspective else (1.0, 1.0, 1.0), mix, signed_area_corners(fixed, i0, i1, i2) > 0,
-                  geo, weights, corners, objects)
+        edges, front = window_edges(clipped.window, i0, i1, i2), signed_area_corners(fixed, i0, i1, i2) > 0
+        table_row(k, s, edges, w if perspective else (1.0, 1.0, 1.0), mix, front, geo, weights, corners, objects)
 
 
 @njit(cache=True, inline="always")

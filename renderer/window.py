@@ -52,6 +52,15 @@ def window_into(points_clip, width, height, window, fixed):
 
 
 @njit(cache=True, inline="always")
+def window_edges(window, i0, i1, i2):
+    """The triangle whose corners are rows ``i0, i1, i2`` of a window-space table (M, ≥ 2) as
+    ``(x0, y0, e1x, e1y, e2x, e2y)``: corner 0 and the edges to corners 1 and 2, in its own
+    corner order (the plane of its screen-space weights)."""
+    x0, y0 = window[i0, 0], window[i0, 1]
+    return x0, y0, window[i1, 0] - x0, window[i1, 1] - y0, window[i2, 0] - x0, window[i2, 1] - y0
+
+
+@njit(cache=True, inline="always")
 def signed_area_fixed(f):
     """Twice the signed area of a fixed-point triangle (3, 2), in the grid's units; > 0 =
     counter-clockwise in window coordinates (y up): a front face (OpenGL's default)."""
