@@ -34,13 +34,13 @@ from renderer.spans import span_points, span_setup
 def span_linear_colours(k, row, c0, count, frags, geo, inputs, scratch):
     """The linear colours of clipped triangle ``k``'s pixels ``c0 … c0 + count − 1`` on
     ``row`` into the colour of ``scratch`` (points (6, ≥ count), colour (3, ≥ count)
-    float32, texture coordinates (2, W) float64 at the pixels' columns, W the row's
+    float32, texture coordinates (2, W) float32 at the pixels' columns, W the row's
     width: :func:`renderer.shading.span_scratch`;
     see the module docstring). ``frags``: a
     :class:`renderer.shading.Fragments` whose ``plane`` is the triangles' set-up (its
     ``tri_index`` is not read); ``inputs``: ``(materials, textures, lights, lit)``."""
     materials, textures, lights, lit = inputs
-    points, colour, st, _ = scratch
+    points, colour, _, _, _ = scratch
     s = frags.clip_source[k]
     o = geo.tri_object[s]
     path = materials.shading_path[o]
@@ -51,7 +51,7 @@ def span_linear_colours(k, row, c0, count, frags, geo, inputs, scratch):
         constant = face and not textured and span_normal_only(o, materials, lights)
         span_colours(o, materials, lights, consts, face, 1 if constant else count, points, colour)
         if textured:
-            modulate_span(k, row, c0, count, frags, geo, textures, o, colour, st)
+            modulate_span(k, consts, c0, count, frags, textures, o, scratch)
         if constant:
             for i in range(1, count):
                 colour[0, i], colour[1, i], colour[2, i] = colour[0, 0], colour[1, 0], colour[2, 0]

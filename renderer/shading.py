@@ -40,8 +40,9 @@ from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
                                          span_normal_only, spans_apply, store_run, store_span)
-from renderer.spans import (LANES, SpanTable, face_toward_viewer, span_points, span_setup, span_table,
-                            span_table_of_corners, whole_lanes)
+from renderer.spans import (LANES, TEXTURED_CORNERS, SpanTable, face_toward_viewer, span_points, span_setup,
+                            span_table, span_table_of_corners, span_tcoords, span_texture_corners,
+                            span_textured_points, whole_lanes)
 from renderer.texture_sampling import modulate_texels, sample_texture
 from renderer.workspace import empty, thread_workspace
 
@@ -141,14 +142,17 @@ def fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, perspec
                      np.empty((0, 11)), np.empty((0, 22), np.float32), np.empty(0, np.int64))
 
 
-def with_span_table(frags: Fragments, geo, ws=None, name: str = "fragments", clipped=None) -> Fragments:
+def with_span_table(frags: Fragments, geo, ws=None, name: str = "fragments", clipped=None,
+                    textured: bool = False) -> Fragments:
     """``frags`` with their span table (:func:`renderer.spans.span_table`) in workspace buffers
     named after ``name``, built where the kernels need it (a frame painted from held colours
     neither builds nor compiles it); read from ``clipped`` (:class:`renderer.spans.CornerTables`)
     if given (:func:`renderer.spans.span_table_of_corners`: the same table, read from no planes
-    or written-out corners)."""
+    or written-out corners); ``textured``: with the corners' texture coordinates
+    (:data:`renderer.spans.TEXTURED_CORNERS`)."""
     k = len(frags.clip_source)
-    table = SpanTable(empty(ws, f"{name}.span_weights", (k, 11)), empty(ws, f"{name}.span_corners", (k, 22), np.float32),
+    columns = TEXTURED_CORNERS if textured else TEXTURED_CORNERS - 6
+    table = SpanTable(empty(ws, f"{name}.span_weights", (k, 11)), empty(ws, f"{name}.span_corners", (k, columns), np.float32),
                       empty(ws, f"{name}.span_object", k, np.int64))
     if k and clipped is not None:
         span_table_of_corners(clipped, frags.perspective, geo, *table)
@@ -241,54 +245,17 @@ def store(rgb, row, col, r, g, b):
 
 
 @njit(cache=True, inline="always")
-def span_tcoords(k, row, c0, count, frags, geo, st):
-    """Texture coordinates (s, t) of the pixels c0 … c0 + count − 1 of ``row`` (all showing
-    clipped triangle ``k``) into ``st`` (2, W) float64 at the pixels' own columns (as
-    :func:`renderer.spans.span_points` writes points): for each pixel the bits
-    :func:`fragment_colour` gets. What is constant along the span is read here, once, and
-    handed to :func:`tcoords_along` as numbers."""
-    s = frags.clip_source[k]
-    i0, i1, i2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
-    tc, plane = geo.tcoords, frags.plane
-    x0, y0, e1x, e1y, e2x, e2y = plane[k, 0], plane[k, 1], plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5]
-    tcoords_along((x0, row + 0.5 - y0, e1x, e1y, e2x, e2y, e1x * e2y - e2x * e1y), clip_ws(frags.tri_clip, k),
-                  clip_weights(frags.clip_bary, k), (tc[i0, 0], tc[i1, 0], tc[i2, 0], tc[i0, 1], tc[i1, 1], tc[i2, 1]),
-                  frags.perspective, c0, count, st)
-
-
-@njit(cache=True, from_python=False)
-def tcoords_along(edges, w, cb, tcoords, perspective, c0, count, st):
-    """The loop of :func:`span_tcoords`: pixel columns c0 … c0 + count − 1 of one row.
-
-    ``edges`` = (x0, py, e1x, e1y, e2x, e2y, a2): the clipped triangle's set-up (vertex 0's
-    x, the row's centre y less vertex 0's, its edges, twice its area), from which the
-    screen-space weights come as :func:`renderer.raster.screen_weights` works them out;
-    then :func:`source_weights` with the clip w ``w`` and clipping weights ``cb``; then the
-    source vertices' coordinates ``tcoords`` = (s0, s1, s2, t0, t1, t2) mixed. Straight
-    arithmetic that LLVM vectorises, its divisions above all. Compiled on its own, called
-    once per span: inlined, the general shading kernel took 2 s longer to compile cold, for
-    no measurable gain."""
-    x0, py, e1x, e1y, e2x, e2y, a2 = edges
-    s0, s1, s2, t0, t1, t2 = tcoords
-    for i in range(count):
-        px = (c0 + i) + 0.5 - x0
-        w0, w1, w2 = source_weights((px * e2y - e2x * py) / a2, (e1x * py - px * e1y) / a2, w, cb, perspective)
-        at = np.uint64(c0 + i)  # unsigned: no wrap-around, the loop vectorises
-        st[0, at] = w0 * s0 + w1 * s1 + w2 * s2
-        st[1, at] = w0 * t0 + w1 * t1 + w2 * t2
-
-
-@njit(cache=True, inline="always")
-def modulate_span(k, row, c0, count, frags, geo, textures, o, colour, st):
-    """The span's linear colours (``colour`` (3, ≥ count) float32) multiplied by object
-    ``o``'s texture (VTK, GL_MODULATE). The pixels' texture coordinates are interpolated as
-    :func:`fragment_colour` interpolates them (float64, the same bits, :func:`span_tcoords`,
-    into the row scratch ``st`` (2, W) float64, at their columns), so a texel is chosen as on the
-    pixel-by-pixel path; then the whole span is filtered in one loop
-    (:func:`renderer.texture_sampling.modulate_texels`); only the product is float32, as in
-    VTK's shader."""
-    span_tcoords(k, row, c0, count, frags, geo, st)
-    modulate_texels(textures, o, st, c0, count, colour)
+def modulate_span(k, consts, c0, count, frags, textures, o, scratch):
+    """The span's linear colours (the colour of ``scratch`` (3, ≥ count) float32,
+    :func:`span_scratch`) multiplied by object ``o``'s texture (VTK, GL_MODULATE). The
+    pixels' texture coordinates are interpolated in float32 from the span's ``consts``
+    (:func:`renderer.spans.span_setup`) and clipped triangle ``k``'s corners
+    (:func:`renderer.spans.span_tcoords`, the bits :func:`shade_textured_run` gives them),
+    into the row scratch ``st`` at their columns c0 … c0 + count − 1; then the whole span is
+    filtered in one loop (:func:`renderer.texture_sampling.modulate_texels`)."""
+    _, colour, st, _, fixed = scratch
+    span_tcoords(consts, span_texture_corners(k, frags), count, st, c0)
+    modulate_texels(textures, o, st, c0, count, colour, fixed)
 
 
 @njit(cache=True, inline="always")
@@ -306,7 +273,7 @@ def light_span(o, row, c0, c1, consts, face, materials, lights, scratch, rgb):
     from :func:`renderer.spans.span_setup`), stored as 8 bits; when the colour cannot change
     along the span (a flat triangle whose model's colour depends on the normal alone), it is
     worked out at the first pixel and stored along it. ``scratch``: :func:`span_scratch`."""
-    points, colour, _, _ = scratch
+    points, colour, _, _, _ = scratch
     constant = face and span_normal_only(o, materials, lights)
     count = 1 if constant else c1 - c0
     reflect_span(o, materials, lights, consts, face, count, points, colour, rgb[row, c0:c0 + count])
@@ -332,13 +299,15 @@ def lit_per_pixel(o, materials, lights):
 @njit(cache=True, inline="always")
 def span_scratch(width):
     """Scratch of a row: ``(points (6, W + 7), colour (3, W))`` float32 (see :func:`shade_lit_run`),
-    ``st`` (2, W + 7) float64, a span's texture coordinates (:func:`modulate_span`), and
+    ``st`` (2, W + 7) float32, a span's texture coordinates (:func:`modulate_span`),
     ``packed`` (W,) uint32, a run's 8-bit colours on their way out
-    (:func:`renderer.reflection.registry.store_run`). The points and coordinates have room
-    for a span's whole vector lanes (:func:`renderer.spans.whole_lanes`) past the row's last column."""
+    (:func:`renderer.reflection.registry.store_run`), and ``fixed`` (2, W) int64, the texels'
+    fixed-point coordinates (:func:`renderer.texture_sampling.filter_span`). The points and
+    coordinates have room for a span's whole vector lanes (:func:`renderer.spans.whole_lanes`)
+    past the row's last column."""
     w = larger(width, 1)
     return (np.empty((6, w + LANES - 1), np.float32), np.empty((3, w), np.float32),
-            np.empty((2, w + LANES - 1)), np.empty(w, np.uint32))
+            np.empty((2, w + LANES - 1), np.float32), np.empty(w, np.uint32), np.empty((2, w), np.int64))
 
 
 @njit(cache=True, inline="always")
@@ -356,7 +325,7 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     code. ``inputs``: ``(materials, lights)``; ``scratch``: :func:`span_scratch`,
     the points at the pixels' own columns."""
     materials, lights = inputs
-    points, colour, _, packed = scratch
+    points, colour, _, packed, _ = scratch
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start = col
@@ -402,18 +371,17 @@ def shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     ``(materials, textures, lights, lit)``. Kept apart from :func:`shade_lit_run`, whose
     kernel (:func:`shade_rows_lit_spans`) then compiles no texture code."""
     materials, textures, lights, _ = inputs
-    points, colour, st, packed = scratch
+    points, colour, st, packed, fixed = scratch
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start = col
     while k != EMPTY:  # whole lanes: the values past a span's end are the next span's, written over next
-        count = whole_lanes(end - col)
-        span_points(span_setup(k, row, col, frags, geo, face), face, count, points, col)
-        span_tcoords(k, row, col, count, frags, geo, st)
+        span_textured_points(span_setup(k, row, col, frags, geo, face), span_texture_corners(k, frags), face,
+                             whole_lanes(end - col), points, st, col)
         col = end
         k, end = next_span_of(o, row, col, frags, geo)
     light_points(o, materials, lights, points, start, col - start, colour)
-    modulate_texels(textures, o, st, start, col - start, colour)
+    modulate_texels(textures, o, st, start, col - start, colour, fixed)
     store_run(colour, col - start, packed, rgb[row, start:col])
     return col
 
@@ -463,9 +431,9 @@ def shade_span(k, row, c0, c1, frags, geo, inputs, scratch, rgb):
     if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
         consts = span_setup(k, row, c0, frags, geo, face)
         if textured:
-            points, colour, st, _ = scratch
+            points, colour, _, _, _ = scratch
             span_colours(o, materials, lights, consts, face, c1 - c0, points, colour)
-            modulate_span(k, row, c0, c1 - c0, frags, geo, textures, o, colour, st)
+            modulate_span(k, consts, c0, c1 - c0, frags, textures, o, scratch)
             store_span(colour, c1 - c0, rgb[row, c0:c1])
         else:
             light_span(o, row, c0, c1, consts, face, materials, lights, scratch, rgb)
@@ -592,7 +560,7 @@ def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, 
         with one_band_at_a_time():
             shade_rows_lit_spans(frags, geo, inputs.materials, inputs.lights, held, background, n_bands, rgb)
     else:
-        frags = with_span_table(frags, geo, thread_workspace())
+        frags = with_span_table(frags, geo, thread_workspace(), textured=bool(inputs.textures.textured.any()))
         with one_band_at_a_time():
             shade_rows(frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit, background, n_bands,
                        bool(spans), rgb)

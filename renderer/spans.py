@@ -17,7 +17,8 @@ column** (the pixel column of its first vertex), so a pixel gets the same bits w
 span it is shaded in; divided by the vertices' clip w they stay affine, ``b_i = l_i/w_i``;
 an attribute is ``(Σ b_i·A_i) / Σ b_i`` with ``A_i`` the clipped vertex's attribute (the
 source vertices' attributes mixed by its clipping weights). Screen-linear interpolation
-takes ``w_i = 1``.
+takes ``w_i = 1``. Texture coordinates too (:func:`span_tcoords`), in a textured frame
+whose span table carries its corners' (s, t).
 
 **Span table.** Everything a span's set-up reads that does not depend on the row is
 gathered once a frame per clipped triangle, in the order ``tri_index`` numbers them (for the
@@ -39,6 +40,9 @@ from renderer.jit import njit, prange
 from renderer.window import signed_area_corners, window_edges
 
 F0, F1 = np.float32(0.0), np.float32(1.0)
+TEXTURED_CORNERS = 28
+"""Columns of a textured frame's span corners: the 22 of every frame, then the clipped
+vertices' texture coordinates."""
 
 
 class SpanTable(NamedTuple):
@@ -49,9 +53,11 @@ class SpanTable(NamedTuple):
     the anchor column (floor of the first vertex's x), the anchor pixel's centre counted
     from that vertex, its y, the two edge vectors and one over twice the signed area
     (:func:`table_weights`), one over each clipped vertex's clip w (1 when screen-linear);
-    corners (K, 22) float32: the clipped vertices' view-space positions (9), their
-    unnormalised normals (9), the plane normal turned toward the viewer (3, zeros when the
-    frame has no face normals), and 1 on a front face, −1 on a back face;
+    corners (K, 22) float32, or (K, 28) in a textured frame (:data:`TEXTURED_CORNERS`): the
+    clipped vertices' view-space positions (9), their unnormalised normals (9), the plane
+    normal turned toward the viewer (3, zeros when the frame has no face normals), 1 on a
+    front face, −1 on a back face, and the clipped vertices' texture coordinates
+    (s0, t0, s1, t1, s2, t2: :func:`span_texture_corners`);
     object (K,) int64: the object the triangle belongs to.
     """
 
@@ -142,6 +148,10 @@ def table_row(k, s, edges, w, mix, front, geo, weights, corners, objects):
     fx, fy, fz = face_toward_viewer(geo, s) if geo.face_normals.shape[0] > 0 else (0.0, 0.0, 0.0)
     corners[k, 18], corners[k, 19], corners[k, 20] = np.float32(fx), np.float32(fy), np.float32(fz)
     corners[k, 21] = F1 if front else -F1
+    if corners.shape[1] == TEXTURED_CORNERS:
+        for i in range(3):
+            st = mixed_vertex(geo.tcoords, mix[i], i0, i1, i2)
+            corners[k, 22 + 2 * i], corners[k, 23 + 2 * i] = st[0], st[1]
     objects[k] = geo.tri_object[s]
 
 
@@ -170,12 +180,15 @@ def clipped_vertex(values, k, i, cb, i0, i1, i2):
 
 @njit(cache=True, inline="always")
 def mixed_vertex(values, mix, i0, i1, i2):
-    """``values`` (per source vertex, 3 columns) mixed by the weights ``mix`` of the source
-    triangle's vertices ``i0, i1, i2``, as float32 (a clipped corner's value)."""
+    """``values`` (per source vertex, 3 columns; or 2, texture coordinates) mixed by the
+    weights ``mix`` of the source triangle's vertices ``i0, i1, i2``, as float32 (a clipped
+    corner's value)."""
     w0, w1, w2 = mix
-    return (np.float32(w0 * values[i0, 0] + w1 * values[i1, 0] + w2 * values[i2, 0]),
-            np.float32(w0 * values[i0, 1] + w1 * values[i1, 1] + w2 * values[i2, 1]),
-            np.float32(w0 * values[i0, 2] + w1 * values[i1, 2] + w2 * values[i2, 2]))
+    s0 = np.float32(w0 * values[i0, 0] + w1 * values[i1, 0] + w2 * values[i2, 0])
+    s1 = np.float32(w0 * values[i0, 1] + w1 * values[i1, 1] + w2 * values[i2, 1])
+    if values.shape[1] == 2:
+        return s0, s1, F0
+    return s0, s1, np.float32(w0 * values[i0, 2] + w1 * values[i1, 2] + w2 * values[i2, 2])
 
 
 @njit(cache=True, inline="always")
@@ -220,14 +233,22 @@ def span_setup(k, row, c0, frags, geo, face):
 
 
 @njit(cache=True, inline="always")
+def span_weights_at(weights, i):
+    """Pixel ``i`` of the span (0 = its first): its three corners' weights ``(w0, w1, w2)``
+    (each already divided by its clip w) and one over their sum, float32: an attribute
+    there is ``(w0·A0 + w1·A1 + w2·A2)·inv``."""
+    fl0, fb0, fl1, fb1, fl2, fb2, first = weights
+    x = first + np.float32(i)
+    w0, w1, w2 = fl0 + fb0 * x, fl1 + fb1 * x, fl2 + fb2 * x
+    return w0, w1, w2, F1 / (w0 + w1 + w2)
+
+
+@njit(cache=True, inline="always")
 def span_pixel(consts, i, face):
     """Pixel ``i`` of the span (0 = its first): view-space position ``(px, py, pz)`` and unit
     normal ``(nx, ny, nz)`` on the viewer's side, float32 (see the module docstring)."""
     weights, positions, normals, face_normal, sign = consts
-    fl0, fb0, fl1, fb1, fl2, fb2, first = weights
-    x = first + np.float32(i)
-    w0, w1, w2 = fl0 + fb0 * x, fl1 + fb1 * x, fl2 + fb2 * x
-    inv = F1 / (w0 + w1 + w2)
+    w0, w1, w2, inv = span_weights_at(weights, i)
     a, b, c = positions
     px = (w0 * a[0] + w1 * b[0] + w2 * c[0]) * inv
     py = (w0 * a[1] + w1 * b[1] + w2 * c[1]) * inv
@@ -274,3 +295,44 @@ def span_points(consts, face, count, points, at):
         j = np.uint64(at + i)  # unsigned: no wrap-around for a negative index, which keeps a loop scalar
         points[0, j], points[1, j], points[2, j] = px, py, pz
         points[3, j], points[4, j], points[5, j] = nx, ny, nz
+
+
+@njit(cache=True, inline="always")
+def span_texture_corners(k, frags):
+    """Clipped triangle ``k``'s corners' texture coordinates, float32, from a textured frame's
+    span table: ``(s0, t0, s1, t1, s2, t2)`` (flat: numba's parallel loops mistake the
+    shapes of nested tuples unpacked)."""
+    c = frags.span_corners
+    return c[k, 22], c[k, 23], c[k, 24], c[k, 25], c[k, 26], c[k, 27]
+
+
+@njit(cache=True, inline="always")
+def span_tcoord(weights, corners, i):
+    """Pixel ``i``'s texture coordinates ``(s, t)``, float32, interpolated as positions are
+    (:func:`span_weights_at`; ``weights`` from :func:`span_setup`, ``corners`` from
+    :func:`span_texture_corners`), as llvmpipe interpolates them, in float32."""
+    w0, w1, w2, inv = span_weights_at(weights, i)
+    s0, t0, s1, t1, s2, t2 = corners
+    return (w0 * s0 + w1 * s1 + w2 * s2) * inv, (w0 * t0 + w1 * t1 + w2 * t2) * inv
+
+
+@njit(cache=True, inline="always")
+def span_tcoords(consts, corners, count, st, at):
+    """The span's first ``count`` pixels' texture coordinates (:func:`span_tcoord`) into columns
+    ``at`` … ``at + count − 1`` of ``st`` (2, W) float32."""
+    for i in range(count):
+        s, t = span_tcoord(consts[0], corners, i)
+        j = np.uint64(at + i)
+        st[0, j], st[1, j] = s, t
+
+
+@njit(cache=True, inline="always")
+def span_textured_points(consts, corners, face, count, points, st, at):
+    """:func:`span_points` and :func:`span_tcoords` in one loop (the same bits as each alone)."""
+    for i in range(count):
+        px, py, pz, nx, ny, nz = span_pixel(consts, i, face)
+        s, t = span_tcoord(consts[0], corners, i)
+        j = np.uint64(at + i)
+        points[0, j], points[1, j], points[2, j] = px, py, pz
+        points[3, j], points[4, j], points[5, j] = nx, ny, nz
+        st[0, j], st[1, j] = s, t

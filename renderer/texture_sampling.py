@@ -18,9 +18,10 @@ Colours come out as value/255.
 - repeat wraps an index modulo the size; clamp holds it to [0, size − 1]
   (GL_CLAMP_TO_EDGE). No mipmaps (VTK's default).
 
-A span of pixels (:func:`modulate_texels`) decides filter and wrap once and runs one
-straight loop per filter; an index already inside the texture is taken as it is, without
-the wrap's ``%``. :func:`sample`, one fragment at a time, gives the same values.
+A span of pixels (:func:`modulate_texels`, float32 coordinates) decides filter and wrap
+once and runs one straight loop per filter; an index already inside the texture is taken
+as it is, without the wrap's ``%``, and a span whose texels all lie inside reads them with
+no wrap tests at all. :func:`sample`, one fragment at a time, gives the same values.
 """
 from __future__ import annotations
 
@@ -30,7 +31,7 @@ from typing import NamedTuple
 
 import numpy as np
 from renderer.jit import njit
-from renderer.min_max import clamp
+from renderer.min_max import clamp, larger, smaller
 
 NEAREST, LINEAR = 0, 1
 REPEAT, CLAMP = 0, 1
@@ -217,29 +218,66 @@ def sample_texture(textures, o, s, t):
 
 
 @njit(cache=True, inline="always")
-def modulate_texels(textures, o, st, first, count, colour):
+def modulate_texels(textures, o, st, first, count, colour, fixed):
     """``colour`` (3, ≥ count) float32, a span's linear colours, multiplied by object ``o``'s
     texture at the span's texture coordinates, columns ``first`` … ``first + count − 1`` of
-    ``st`` (2, W) float64 (:func:`filter_span`)."""
+    ``st`` (2, W) float32 (:func:`filter_span`; ``fixed`` (2, W) int64 scratch)."""
     filter_span(textures.texels, textures.offset[o], textures.width[o], textures.height[o], textures.filter[o],
-                textures.wrap[o], st, first, count, colour)
+                textures.wrap[o], st, (first, count), colour, fixed)
 
 
 @njit(cache=True, from_python=False)
-def filter_span(texels, offset, width, height, filter_mode, wrap, st, first, count, colour):
-    """The values :func:`sample` gives at ``st``, as float32, multiplied into ``colour``. Filter
-    and wrap are the object's, chosen once for the whole span: one straight loop per filter,
-    the filter inlined. Compiled on its own, called once per span: inlined into the general
-    shading kernel too, that kernel took 38 s instead of 31 s to compile cold, for no
-    measurable gain."""
+def filter_span(texels, offset, width, height, filter_mode, wrap, st, columns, colour, fixed):
+    """The values :func:`sample` gives at the ``columns`` ``(first, count)`` of ``st``, as
+    float32, multiplied into ``colour``. Filter and wrap are the object's, chosen once for
+    the whole span: one straight loop per filter, the filter inlined. The linear filter
+    first works out every pixel's fixed-point texel coordinates (:func:`fixed_coordinates`,
+    into ``fixed``); when the whole span's four texels lie inside the texture, as they do
+    but at its edges, its loop (:func:`linear_inside`) reads them without a wrap's tests
+    and ``%`` (9.7 → 5.4 ns a pixel, one thread). Compiled on its own, called once per span:
+    inlined into the general shading kernel too, that kernel took 38 s instead of 31 s to
+    compile cold, for no measurable gain."""
+    first, count = columns
     if filter_mode == NEAREST:
         for i in range(count):
             j = np.uint64(first + i)
             modulate(colour, i, nearest_texel(texels, offset, width, height, wrap, st[0, j], st[1, j]))
+    elif fixed_coordinates(st, width, height, first, count, fixed):
+        linear_inside(texels, offset, width, first, count, colour, fixed)
     else:
         for i in range(count):
             j = np.uint64(first + i)
             modulate(colour, i, linear_texel(texels, offset, width, height, wrap, st[0, j], st[1, j]))
+
+
+@njit(cache=True, inline="always")
+def fixed_coordinates(st, width, height, first, count, fixed):
+    """The linear filter's (u, v) = (s·W − ½, t·H − ½) of the columns ``first`` …
+    ``first + count − 1`` of ``st``, in 256ths (:func:`linear_texel`), into the same
+    columns of ``fixed`` (2, W) int64; True when all four texels of every pixel lie inside
+    the texture (no wrap or clamp needed)."""
+    lo_u = lo_v = np.int64(0)
+    hi_u = hi_v = np.int64(-1)
+    for i in range(count):
+        j = np.uint64(first + i)
+        fu = np.int64(math.floor((st[0, j] * width - 0.5) * 256.0))
+        fv = np.int64(math.floor((st[1, j] * height - 0.5) * 256.0))
+        fixed[0, j], fixed[1, j] = fu, fv
+        lo_u, hi_u, lo_v, hi_v = smaller(lo_u, fu), larger(hi_u, fu), smaller(lo_v, fv), larger(hi_v, fv)
+    return lo_u >= 0 and (hi_u >> 8) + 1 < width and lo_v >= 0 and (hi_v >> 8) + 1 < height
+
+
+@njit(cache=True, inline="always")
+def linear_inside(texels, offset, width, first, count, colour, fixed):
+    """:func:`linear_texel` at the fixed-point coordinates ``fixed`` (:func:`fixed_coordinates`)
+    of a span whose texels all lie inside the texture, multiplied into ``colour``."""
+    for i in range(count):
+        j = np.uint64(first + i)
+        fu, fv = fixed[0, j], fixed[1, j]
+        at = np.uint64(offset + (fv >> 8) * width + (fu >> 8))
+        up = at + np.uint64(width)
+        one = np.uint64(1)
+        modulate(colour, i, bilinear(texels[at], texels[at + one], texels[up], texels[up + one], fu & 255, fv & 255))
 
 
 @njit(cache=True, inline="always")

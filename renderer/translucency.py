@@ -576,9 +576,9 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
     tri_fixed = np.ascontiguousarray(clipped.tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(clipped.tri_window, dtype=np.float64).reshape(-1, 3, 3)
     setup = set_up(tri_fixed, tri_window, height, cull_back, ws, "translucency")
-    frags = with_span_table(fragments(np.empty((0, 0), np.int32), setup.plane, setup.front,
-                                      np.ascontiguousarray(clipped.tri_clip), np.ascontiguousarray(clipped.clip_bary),
-                                      np.ascontiguousarray(clipped.clip_source), perspective), geo, ws, "translucency")
+    corners = [np.ascontiguousarray(t) for t in (clipped.tri_clip, clipped.clip_bary, clipped.clip_source)]
+    frags = with_span_table(fragments(np.empty((0, 0), np.int32), setup.plane, setup.front, *corners, perspective),
+                            geo, ws, "translucency", textured=bool(inputs.textures.textured.any()))
     seen = empty(ws, "translucency.seen", (height, width), np.int32)
     strip_bands = raster_bands((height + STRIP_ROWS - 1) // STRIP_ROWS)
     shading = (setup, frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit,

@@ -42,7 +42,7 @@ def fragments(geo):
     setup = set_up(fixed, WINDOW, 32, False)
     return with_span_table(make_fragments(np.empty((0, 0), np.int32), setup.plane, setup.front,
                                           geo.verts_clip[None].copy(), np.eye(3)[None].copy(), np.zeros(1, np.int64), True),
-                           geo)
+                           geo, textured=True)
 
 
 def textures(filter_mode, wrap):
@@ -70,11 +70,11 @@ def colours_of_runs(path, lights, model="vtk", texture=(None, "repeat"), run=RUN
               textures(*texture), lights, lit)
     out = np.empty((32, 3, 2 * RUN), np.float32)
     # texture coordinates go to their own columns of a row's scratch (as points do in the shading kernels)
-    points, colour, st = np.empty((6, RUN), np.float32), np.empty((3, RUN), np.float32), np.empty((2, 2 * RUN))
-    packed = np.empty(RUN, np.uint32)
+    points, colour, st = np.empty((6, RUN), np.float32), np.empty((3, RUN), np.float32), np.empty((2, 2 * RUN), np.float32)
+    packed, fixed = np.empty(RUN, np.uint32), np.empty((2, 2 * RUN), np.int64)
     for row in range(32):
         for c0 in range(0, 2 * RUN, run):
-            span_linear_colours(0, row, c0, run, frags, geo, inputs, (points, colour, st, packed))
+            span_linear_colours(0, row, c0, run, frags, geo, inputs, (points, colour, st, packed, fixed))
             out[row, :, c0:c0 + run] = colour[:, :run]
     return out, (frags, geo, inputs)
 

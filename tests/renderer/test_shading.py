@@ -13,10 +13,10 @@ from renderer.reflection.materials import (FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_FA
                                            VERTEX_COLOUR)
 from renderer.raster import screen_weights
 from renderer.plane_normals import face_normals
-from renderer.shading import (ShadingInputs, fragment_weights, shade, span_covers, span_tcoords, spans_cover_all,
-                              to_8bit)
+from renderer.shading import ShadingInputs, fragment_weights, shade, span_covers, spans_cover_all, to_8bit
 from renderer.shading import fragments as make_fragments
 from renderer.shading import with_span_table
+from renderer.spans import span_setup, span_tcoords, span_texture_corners, span_textured_points
 from renderer.texture_sampling import NEAREST, REPEAT, Textures, pack_lanes
 
 from .kernel_inputs import materials, preset_tables, view_lights
@@ -98,10 +98,13 @@ def pixel_tcoords(k, row, col, frags, geo):
 
 
 @pytest.mark.parametrize("perspective", [True, False])
-def test_a_spans_texture_coordinates_are_the_bits_of_its_pixels_one_at_a_time(perspective):
-    """``span_tcoords`` (the textured span's coordinates, constants read once, one loop) gives
-    every pixel the float64 bits ``fragment_colour`` interpolates for it: 40 clipped triangles
-    of random shape, clip w (0.3 … 6) and clipping weights, spans starting anywhere on 30 rows."""
+def test_a_spans_texture_coordinates_are_its_pixels_own_in_float32(perspective):
+    """A span's texture coordinates (``span_tcoords``: float32, interpolated as positions are,
+    as llvmpipe interpolates them) are the bits each of its pixels gets as a span of its own
+    and the bits ``span_textured_points`` writes beside the points; and they are the float64
+    interpolation ``fragment_colour`` works out, to float32's precision: 40 clipped
+    triangles of random shape, clip w (0.3 … 6) and clipping weights, spans starting
+    anywhere on 30 rows."""
     rng = np.random.default_rng(11)
     n_src, k_clip = 12, 40
     tris = rng.integers(0, 30, (n_src, 3))
@@ -116,14 +119,24 @@ def test_a_spans_texture_coordinates_are_the_bits_of_its_pixels_one_at_a_time(pe
     cb = rng.random((k_clip, 3, 3))
     frags = make_fragments(np.zeros((1, 1), np.int32), plane, np.ones(k_clip, np.bool_), tri_clip,
                             cb / cb.sum(axis=2, keepdims=True), rng.integers(0, n_src, k_clip), perspective)
-    frags = with_span_table(frags, geo)
-    st = np.empty((2, 64))
+    frags = with_span_table(frags, geo, textured=True)
+    st, alone, beside, points = np.empty((2, 64), np.float32), np.empty((2, 64), np.float32), \
+        np.empty((2, 64), np.float32), np.empty((6, 64), np.float32)
+    worst = 0.0
     for k in range(k_clip):
+        corners = span_texture_corners(k, frags)
         for row in range(30):
             c0, count = int(rng.integers(0, 40)), int(rng.integers(1, 25))
-            span_tcoords(k, row, c0, count, frags, geo, st)
-            expected = [pixel_tcoords(k, row, c0 + i, frags, geo) for i in range(count)]
-            assert st[:, c0:c0 + count].T.tolist() == [list(e) for e in expected], (k, row, c0)
+            span_tcoords(span_setup(k, row, c0, frags, geo, False), corners, count, st, c0)
+            span_textured_points(span_setup(k, row, c0, frags, geo, False), corners, False, count, points, beside, c0)
+            for col in range(c0, c0 + count):
+                span_tcoords(span_setup(k, row, col, frags, geo, False), corners, 1, alone, col)
+                expected = np.array(pixel_tcoords(k, row, col, frags, geo))
+                if np.abs(expected).max() < 10.0:  # inside or near the triangle: weights of a sane size
+                    worst = max(worst, np.abs(st[:, col] - expected).max())
+            assert st[:, c0:c0 + count].tobytes() == alone[:, c0:c0 + count].tobytes(), (k, row, c0)
+            assert st[:, c0:c0 + count].tobytes() == beside[:, c0:c0 + count].tobytes(), (k, row, c0)
+    assert 0.0 < worst < 2e-4
 
 
 # --------------------------------------------------------------------------- colours by path

@@ -17,8 +17,9 @@ from lab.normals import angle_weighted_normals
 from lab.shapes import cube, cylinder, icosphere, quad
 from renderer import RenderOptions, pipeline, render
 from renderer.pipeline import SceneGeometry
-from renderer.shading import EVERYTHING, SPAN_TABLE, fragments, shade, span_tcoords, with_span_table
-from renderer.spans import clipped_vertex, face_toward_viewer, table_weights
+from renderer.shading import EVERYTHING, SPAN_TABLE, fragments, shade, with_span_table
+from renderer.spans import (clipped_vertex, face_toward_viewer, span_setup, span_tcoords, span_texture_corners,
+                            table_weights)
 from .single_thread import one_thread
 from .texture_filters import by_definition
 
@@ -264,9 +265,11 @@ def test_textured_spans_on_texel_edges_show_the_filter_as_defined(filter_mode, w
                         shade(frags, geo, *a, **k))
     fast = render(s)
     frags, geo = seen[0]
-    st = np.empty((2, 64))
+    frags = with_span_table(frags, geo, textured=True)
+    st = np.empty((2, 64), np.float32)
     for row, col in np.ndindex(64, 64):  # window rows, y up
-        span_tcoords(frags.tri_index[row, col], row, col, 1, frags, geo, st)
+        k = frags.tri_index[row, col]
+        span_tcoords(span_setup(k, row, col, frags, geo, False), span_texture_corners(k, frags), 1, st, col)
         assert st[:, col].tolist() == [(col + 0.5) / 16 - 1, (row + 0.5) / 16 - 1]
     codes = (LINEAR if filter_mode == "linear" else NEAREST, CLAMP if wrap == "clamp" else REPEAT)
     texels = tex.texels_8bit.reshape(-1, 3)
@@ -323,5 +326,5 @@ def test_a_span_of_half_a_vector_or_more_is_worked_out_in_whole_vectors():
     assert [whole_lanes(n) for n in range(LANES // 2)] == list(range(LANES // 2))
     for n in range(LANES // 2, 5 * LANES):
         assert whole_lanes(n) % LANES == 0 and n <= whole_lanes(n) < n + LANES
-    points, _, st, _ = span_scratch(37)
+    points, _, st, _, _ = span_scratch(37)
     assert points.shape[1] >= whole_lanes(37) and st.shape[1] >= whole_lanes(37)

@@ -87,8 +87,10 @@ def test_sample_is_the_filter_as_defined_inside_outside_and_on_texel_edges(filt,
                                                             f"{s[0]}x{s[1]}" for f, w, s in FILTERS])
 def test_a_span_is_modulated_by_exactly_the_values_sample_gives(filt, wrap, size):
     """The span's loop (filter and wrap chosen once, :func:`modulate_texels`) multiplies each
-    pixel's colour by float32 of what :func:`sample` gives there, bit for bit; a second
-    texture after the first (``offset``) is read where it starts."""
+    pixel's colour by float32 of what :func:`sample` gives there, bit for bit: on coordinates
+    inside, outside and on texel edges; on a span whose texels all lie inside the texture
+    (the linear filter's loop without wrapping); and on that span with one pixel outside. A
+    second texture after the first (``offset``) is read where it starts."""
     width, height = size
     rng = np.random.default_rng(9)
     first = rng.integers(0, 256, (7, 3)).astype(np.uint8)  # another object's texture before this one
@@ -97,15 +99,18 @@ def test_a_span_is_modulated_by_exactly_the_values_sample_gives(filt, wrap, size
     textures = Textures(np.array([True, True]), np.array([0, 7]), np.array([7, width]), np.array([1, height]),
                         np.array([NEAREST, filt]), np.array([REPEAT, wrap]), lanes)
     s, t = points(width, height, seed=1)
-    st = np.ascontiguousarray(np.stack([s, t]))
-    start = rng.uniform(0.2, 1.5, (3, len(s))).astype(np.float32)
-    colour = start.copy()
-    at = 5  # the span's coordinates from column 5 of a row's scratch on
-    row_st = np.concatenate([np.full((2, at), np.nan), st], axis=1)
-    modulate_texels(textures, 1, row_st, at, len(s), colour)
-    expected = start * np.array([sample(lanes, 7, width, height, filt, wrap, a, b) for a, b in zip(s, t)],
-                                np.float32).T
-    np.testing.assert_array_equal(colour, expected)
+    inner = [(0.5 + 2 * rng.random(len(s)) * (size - 1.5) / 2) / size if size > 1 else np.zeros(len(s))
+             for size in (width, height)]  # every pixel's four texels inside the texture
+    for s, t in ((s, t), inner, (np.append(inner[0], s[0]), np.append(inner[1], t[0]))):
+        st = np.stack([s, t]).astype(np.float32)  # a span's coordinates are float32
+        start = rng.uniform(0.2, 1.5, (3, len(s))).astype(np.float32)
+        colour = start.copy()
+        at = 5  # the span's coordinates from column 5 of a row's scratch on
+        row_st = np.concatenate([np.full((2, at), np.nan, np.float32), st], axis=1)
+        modulate_texels(textures, 1, row_st, at, len(s), colour, np.empty((2, at + len(s)), np.int64))
+        expected = start * np.array([sample(lanes, 7, width, height, filt, wrap, a, b) for a, b in st.T],
+                                    np.float32).T
+        np.testing.assert_array_equal(colour, expected)
 
 
 def test_lanes_hold_red_green_and_blue_sixteen_bits_apart():
