@@ -35,6 +35,7 @@ import fcntl
 import hashlib
 import os
 import shutil
+import sys
 from pathlib import Path
 
 from renderer.threads import choose_threading_layer
@@ -48,6 +49,25 @@ from numba import prange  # noqa: E402
 from numba.core.caching import CacheImpl, IndexDataCacheFile, _CacheLocator  # noqa: E402
 
 numba.config.THREADING_LAYER = LAYER  # also when something imported numba before us
+
+
+def import_numpy_support_without_blas() -> None:
+    """Import numba's numpy implementations (``numba.np.arraymath``) with ``scipy.linalg``
+    hidden, unless it is already imported. On import, that module probes for BLAS (for
+    ``np.dot`` in a kernel) by importing ``scipy.linalg``: 0.14 s of a warm start of 1.2 s,
+    for code no renderer kernel uses (none calls BLAS). Hidden, the probe finds none, and
+    numba's ``np.dot`` and ``np.linalg`` would not compile in a kernel; every other numpy
+    function does. numba imports the module anyway before it loads or compiles the first kernel."""
+    if "numba.np.arraymath" in sys.modules or "scipy.linalg" in sys.modules:
+        return
+    sys.modules["scipy.linalg"] = None  # an import of it or of any of its modules raises ImportError
+    try:
+        import numba.np.arraymath  # noqa: F401
+    finally:
+        del sys.modules["scipy.linalg"]
+
+
+import_numpy_support_without_blas()
 
 __all__ = ["njit", "prange", "SOURCE_DIR", "source_hash", "cache_root", "cache_folder", "KEEP"]
 

@@ -126,6 +126,25 @@ def test_a_cold_start_compiles_within_the_bar(tmp_path):
     assert cpu < COLD_START_CPU_SECONDS, f"a cold start took {cpu:.1f} s of CPU (bar {COLD_START_CPU_SECONDS} s)"
 
 
+def probe(code: str) -> str:
+    """What a fresh Python process running ``code`` prints (the repository on its path)."""
+    done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    return done.stdout.strip()
+
+
+def test_a_render_process_does_not_import_scipy_linalg_for_numbas_blas_probe():
+    """Importing the renderer (which imports numba's numpy support with ``scipy.linalg`` hidden,
+    ``jit.import_numpy_support_without_blas``) and drawing a frame leaves ``scipy.linalg``
+    unimported (0.14 s of a warm start); the hiding is undone, so an import of it afterwards
+    works; and a process that imported it first keeps numba's BLAS."""
+    drawn = probe("import sys; from renderer import render; from lab import load_scene; render(load_scene('cube')); "
+                  "print('scipy.linalg' in sys.modules); import scipy.linalg; print(scipy.linalg.norm([3.0, 4.0]))")
+    assert drawn.split() == ["False", "5.0"]
+    first = probe("import scipy.linalg; import renderer.jit; import numba.np.arraymath as m; print(m._HAVE_BLAS)")
+    assert first == "True"
+
+
 def test_the_hash_follows_contents_not_time_stamps(tmp_path):
     (tmp_path / "a.py").write_text("x = 1\n")
     (tmp_path / "sub").mkdir()
