@@ -40,7 +40,7 @@ from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
                                          span_normal_only, spans_apply, store_run, store_span)
-from renderer.spans import (LANES, TEXTURED_CORNERS, SpanTable, face_toward_viewer, span_points, span_setup,
+from renderer.spans import (CORNERS, LANES, TEXTURED_CORNERS, SpanTable, face_toward_viewer, span_points, span_setup,
                             span_table, span_table_of_corners, span_tcoords, span_texture_corners,
                             span_textured_points, whole_lanes)
 from renderer.texture_sampling import modulate_texels, sample_texture
@@ -139,7 +139,7 @@ def fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, perspec
     """:class:`Fragments` of these clipped triangles, their span table still empty
     (:func:`with_span_table` fills it, where a frame is shaded in spans)."""
     return Fragments(tri_index, plane, front, tri_clip, clip_bary, clip_source, bool(perspective),
-                     np.empty((0, 11)), np.empty((0, 22), np.float32), np.empty(0, np.int64))
+                     np.empty((0, 11)), np.empty((0, CORNERS), np.float32), np.empty(0, np.int64))
 
 
 def with_span_table(frags: Fragments, geo, ws=None, name: str = "fragments", clipped=None,
@@ -151,7 +151,7 @@ def with_span_table(frags: Fragments, geo, ws=None, name: str = "fragments", cli
     or written-out corners); ``textured``: with the corners' texture coordinates
     (:data:`renderer.spans.TEXTURED_CORNERS`)."""
     k = len(frags.clip_source)
-    columns = TEXTURED_CORNERS if textured else TEXTURED_CORNERS - 6
+    columns = TEXTURED_CORNERS if textured else CORNERS
     table = SpanTable(empty(ws, f"{name}.span_weights", (k, 11)), empty(ws, f"{name}.span_corners", (k, columns), np.float32),
                       empty(ws, f"{name}.span_object", k, np.int64))
     if k and clipped is not None:

@@ -40,9 +40,9 @@ from renderer.jit import njit, prange
 from renderer.window import signed_area_corners, window_edges
 
 F0, F1 = np.float32(0.0), np.float32(1.0)
-TEXTURED_CORNERS = 28
-"""Columns of a textured frame's span corners: the 22 of every frame, then the clipped
-vertices' texture coordinates."""
+CORNERS, TEXTURED_CORNERS = 22, 28
+"""Columns of the span corners (:class:`SpanTable`): every frame's 22, and a textured frame's
+28 (then the clipped vertices' texture coordinates)."""
 
 
 class SpanTable(NamedTuple):
@@ -53,7 +53,7 @@ class SpanTable(NamedTuple):
     the anchor column (floor of the first vertex's x), the anchor pixel's centre counted
     from that vertex, its y, the two edge vectors and one over twice the signed area
     (:func:`table_weights`), one over each clipped vertex's clip w (1 when screen-linear);
-    corners (K, 22) float32, or (K, 28) in a textured frame (:data:`TEXTURED_CORNERS`): the
+    corners (K, 22) float32, or (K, 28) in a textured frame (:data:`CORNERS`, :data:`TEXTURED_CORNERS`): the
     clipped vertices' view-space positions (9), their unnormalised normals (9), the plane
     normal turned toward the viewer (3, zeros when the frame has no face normals), 1 on a
     front face, −1 on a back face, and the clipped vertices' texture coordinates

@@ -274,10 +274,10 @@ def linear_inside(texels, offset, width, first, count, colour, fixed):
     for i in range(count):
         j = np.uint64(first + i)
         fu, fv = fixed[0, j], fixed[1, j]
-        at = np.uint64(offset + (fv >> 8) * width + (fu >> 8))
-        up = at + np.uint64(width)
-        one = np.uint64(1)
-        modulate(colour, i, bilinear(texels[at], texels[at + one], texels[up], texels[up + one], fu & 255, fv & 255))
+        i0, j0 = fu >> 8, fv >> 8
+        modulate(colour, i, bilinear(texel(texels, offset, width, i0, j0), texel(texels, offset, width, i0 + 1, j0),
+                                     texel(texels, offset, width, i0, j0 + 1),
+                                     texel(texels, offset, width, i0 + 1, j0 + 1), fu & 255, fv & 255))
 
 
 @njit(cache=True, inline="always")
