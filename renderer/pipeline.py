@@ -42,7 +42,7 @@ from renderer.texture_sampling import texture_table
 from renderer.translucency import draw_translucent
 from renderer.transform import normal_matrix, transform_vertices
 from renderer.visibility_buffer import depth_to_window
-from renderer.visible import visible_triangles
+from renderer.visible import renumbering_pays, visible_triangles
 from renderer.window import window_into, window_rows_to_image_rows
 from renderer.workspace import empty, kept, thread_workspace
 
@@ -387,7 +387,10 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     vis = rasterize_visibility(opaque.indexed(), width, height, rules.fill_rule, ws=ws,
                                depth_test=rules.depth_test, cull_back=rules.cull_back, batch=BATCH if lean else None,
                                backs_last=backs_last)
-    won = opaque.take(visible_triangles(vis.tri_index, opaque.count, ws)) if lean else opaque  # as vis.tri_index counts
+    if lean and renumbering_pays(opaque.count, height, width):  # the winners only, numbered as the rows show them
+        won = opaque.take(visible_triangles(vis.tri_index, opaque.count, ws))
+    else:
+        won = opaque  # vis.tri_index counts every opaque triangle
     if any_flat(materials) and not every_normal:
         face_normals_of(geo.verts_view, geo.triangles, shown_sources(won, clipped.clip_source[translucent]),
                         geo.face_normals)

@@ -313,12 +313,15 @@ SETTINGS = {"zbuffer": RenderSettings(), "painter": RenderSettings(hidden_surfac
             "no-depth-test": RenderSettings(hidden_surface="none")}
 
 
+@pytest.mark.parametrize("renumbered", [True, False], ids=["winners-renumbered", "raster-numbers"])
 @pytest.mark.parametrize("settings", SETTINGS, ids=list(SETTINGS))
-def test_the_lean_path_gives_the_bytes_of_the_plain_path(settings, monkeypatch):
+def test_the_lean_path_gives_the_bytes_of_the_plain_path(settings, renumbered, monkeypatch):
     """Every triangle written out, cut against all six planes and set up at once, or the lean
-    path in batches of 7 triangles (every batch boundary inside some object): the same rgb,
-    depth, coverage and stage buffers, on a scene that straddles each plane."""
+    path in batches of 7 triangles (every batch boundary inside some object), its winners
+    renumbered or not (:func:`renderer.visible.renumbering_pays`): the same rgb, depth,
+    coverage and stage buffers, on a scene that straddles each plane."""
     import renderer.pipeline
+    import renderer.visible
     from renderer import RenderOptions, render_stages
 
     scene = view_volume_scene(SETTINGS[settings])
@@ -326,6 +329,8 @@ def test_the_lean_path_gives_the_bytes_of_the_plain_path(settings, monkeypatch):
     assert min(straddling) > 0 and whole > 50 and rejected > 50 and pieces > 50
     plain, plain_stages = render_stages(scene, RenderOptions(lean=False))
     monkeypatch.setattr(renderer.pipeline, "BATCH", 7)
+    monkeypatch.setattr(renderer.visible, "PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
+    assert renderer.visible.renumbering_pays(1, *scene.image.size) == renumbered
     lean, lean_stages = render_stages(scene, RenderOptions())
     assert 0.3 < plain.coverage.mean() < 1.0
     for name in ("rgb", "depth", "coverage"):

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from renderer.raster import EMPTY
-from renderer.visible import number_in_sight, visible_triangles
+from renderer.visible import PIXELS_PER_TRIANGLE, number_in_sight, renumbering_pays, visible_triangles
 from renderer.workspace import Workspace
 
 
@@ -54,3 +54,14 @@ def test_numbering_puts_back_the_zeros_it_was_given_so_a_workspace_table_serves_
         alone, reused = before.copy(), before.copy()
         np.testing.assert_array_equal(visible_triangles(reused, count, ws), visible_triangles(alone, count))
         np.testing.assert_array_equal(reused, alone)
+
+
+def test_winners_are_renumbered_when_the_triangles_are_many_for_the_pixels():
+    """Fewer than PIXELS_PER_TRIANGLE pixels a triangle: renumbered (a 20,480-triangle sphere
+    at 512²); as many or more: the raster's numbers kept (the same sphere at 1024², a
+    4,096-triangle cylinder at 512²)."""
+    assert PIXELS_PER_TRIANGLE == 32
+    assert renumbering_pays(20480, 512, 512)
+    assert not renumbering_pays(20480, 1024, 1024)
+    assert not renumbering_pays(4096, 512, 512)
+    assert renumbering_pays(512 * 512 // 32 + 1, 512, 512) and not renumbering_pays(512 * 512 // 32, 512, 512)
