@@ -43,8 +43,9 @@ from renderer.jit import njit, prange
 from renderer.min_max import larger, smaller
 
 from renderer.bands import first_row_of_band, one_band_at_a_time, raster_bands, shading_bands
-from renderer.float32_math import half
 from renderer.fragment_spans import batch_points, light_batch, lit_in_batches, span_linear_colours
+from renderer.oit_buffers import (F32_ONE, add_run_to_oit, clear_oit_rows, mul8, oit_add, oit_resolve,
+                                  resolve_oit_row)
 from renderer.raster import DEPTH_CLEAR, FILL_RULES, pixel_depth, row_depth, row_span, set_up
 from renderer.reflection.materials import PIXEL_FACE_NORMAL
 from renderer.shading import ShadingInputs, fragments, span_scratch, unorm8, with_span_table
@@ -105,54 +106,6 @@ def collect_fragments(setup, n_bands, rule, depth_test, opaque_depth, count, sta
                             frag_tri[i] = k
                             frag_z[i] = z
                         count[row, col] += 1
-
-
-F32_ONE = np.float32(1.0)
-
-
-@njit(cache=True, inline="always")
-def mul8(a, b):
-    """Two 8-bit unorm values multiplied, as an 8-bit blend unit does: round(a·b/255)."""
-    t = np.int64(a) * np.int64(b) + 128
-    return (t + (t >> 8)) >> 8
-
-
-@njit(cache=True, inline="always")
-def blend8(src, src_factor, dst, dst_factor):
-    """One channel of 8-bit blending: ``src·src_factor + dst·dst_factor`` (all unorm8), saturated."""
-    return smaller(mul8(src, src_factor) + mul8(dst, dst_factor), 255)
-
-
-@njit(cache=True, inline="always")
-def oit_add(sum_r, sum_g, sum_b, weight, transmit, r, g, b, a):
-    """One fragment (float32 linear colour ``r, g, b``, alpha ``a``) added to the ``oit``
-    buffers: ``α·c`` to the half-float RGB sum, ``α`` to the half-float weight, and the
-    half-float transmittance multiplied by ``1 − α``, each rounded to half after the step
-    as the 16-bit float targets store them. Returns the five new values (float32)."""
-    return (half(sum_r + r * a), half(sum_g + g * a), half(sum_b + b * a), half(weight + a),
-            half((F32_ONE - a) * transmit))
-
-
-@njit(cache=True, inline="always")
-def oit_resolve(sum_r, sum_g, sum_b, weight, transmit, behind, out):
-    """The ``oit`` buffers of one pixel composited over the 8-bit ``behind`` into the 8-bit
-    ``out``: ``C = Σαc / max(Σα, 0.01)`` with coverage ``A = 1 − T``, ``C`` converted to 8 bits
-    (:func:`oit_colour8`) and blended ``C·A + behind·(1 − A)`` in 8-bit arithmetic."""
-    r8, g8, b8, a8 = oit_colour8(sum_r, sum_g, sum_b, weight, transmit)
-    out[0], out[1], out[2] = oit_over(r8, g8, b8, a8, behind[0], behind[1], behind[2])
-
-
-@njit(cache=True, inline="always")
-def oit_colour8(sum_r, sum_g, sum_b, weight, transmit):
-    """One pixel's ``oit`` buffers as 8 bits ``(r, g, b, a)``: ``Σαc / max(Σα, 0.01)``, coverage ``1 − T`` (0 if clear)."""
-    w = larger(weight, np.float32(0.01))
-    return unorm8(sum_r / w), unorm8(sum_g / w), unorm8(sum_b / w), unorm8(F32_ONE - transmit)
-
-
-@njit(cache=True, inline="always")
-def oit_over(r8, g8, b8, a8, r, g, b):
-    """The 8-bit ``oit`` colour ``(r8, g8, b8)``, coverage ``a8``, over the 8-bit ``(r, g, b)`` (:func:`blend8`)."""
-    return blend8(r8, a8, r, 255 - a8), blend8(g8, a8, g, 255 - a8), blend8(b8, a8, b, 255 - a8)
 
 
 @njit(cache=True, inline="always")
@@ -265,13 +218,6 @@ def composite_pixel(mode, fragments, m, behind, opaque_behind, out, order, acc, 
         back_to_front(colours, alpha, order, m, behind, acc, out)
 
 
-SUM_R, SUM_G, SUM_B, WEIGHT, TRANSMIT = range(5)
-"""The ``oit`` buffers as :func:`shade_fragments` keeps them: five (H, W) float32 planes
-holding half-float values, the sums Σαr, Σαg, Σαb, the weight Σα and the transmittance
-Π(1 − α). A pixel's are only read once it has a fragment (its count is not 0), so they
-are never cleared."""
-
-F32_ZERO = np.float32(0.0)
 
 STRIP_ROWS = 16
 """Rows of a strip, the unit of work of :func:`shade_fragments`: every triangle is drawn over
@@ -294,27 +240,6 @@ def batch_scratch(width):
     return np.empty((6, n), np.float32), np.empty((3, n), np.float32), np.empty((n, 3), np.int64)
 
 
-@njit(cache=True, from_python=False, refcounts=False)
-def add_run_to_oit(colour, first, a, row, c0, count, seen, sums):
-    """A run's ``count`` fragments (linear colours: columns ``first`` … of ``colour`` (3, N)
-    float32, alpha ``a``; pixels ``c0`` … of ``row``) added to the pixels' ``oit`` buffers
-    ``sums`` (5, H, W) (:func:`oit_add`; empty buffers where ``seen`` (H, W) is still 0), and
-    counted in ``seen``. Compiled on its own, the loop vectorises over the row's plain 1-D
-    buffers (measured: 1 ns a fragment instead of 6); without reference counts, those row
-    views cost nothing to take (counted, 8 % of a ``translucent-three`` frame went to the
-    counts of six views a run)."""
-    seen_row, sum_r, sum_g, sum_b = seen[row], sums[SUM_R, row], sums[SUM_G, row], sums[SUM_B, row]
-    weight, transmit = sums[WEIGHT, row], sums[TRANSMIT, row]
-    for i in range(count):
-        p, j = np.uint64(c0 + i), np.uint64(first + i)
-        fresh = seen_row[p] == 0
-        sum_r[p], sum_g[p], sum_b[p], weight[p], transmit[p] = oit_add(
-            F32_ZERO if fresh else sum_r[p], F32_ZERO if fresh else sum_g[p], F32_ZERO if fresh else sum_b[p],
-            F32_ZERO if fresh else weight[p], F32_ONE if fresh else transmit[p], colour[0, j], colour[1, j],
-            colour[2, j], a)
-        seen_row[p] += 1
-
-
 @njit(cache=True, inline="always")
 def emit_run(colour, first, a, row, c0, count, seen, start, colours, sums):
     """A lit run's fragments (pixels ``c0 … c0 + count − 1`` of ``row``, linear colours from
@@ -329,26 +254,6 @@ def emit_run(colour, first, a, row, c0, count, seen, start, colours, sums):
             seen[row, c0 + i] += 1
     else:
         add_run_to_oit(colour, first, a, row, c0, count, seen, sums)
-
-
-@njit(cache=True, inline="always")
-def resolve_oit_row(sums, seen, row, rgb, eight):
-    """Every pixel of ``row`` that got a fragment: its ``oit`` buffers over ``rgb`` (as :func:`oit_resolve`).
-    First every pixel's 8-bit colour and coverage (:func:`oit_colour8`) into ``eight`` (4, ≥ W) uint8, no
-    branch, 8 lanes at a time (a pixel without fragments reads clear buffers, not stale ones); then those
-    with a fragment blended over ``rgb``. In one loop this ran scalar: 14 % of a translucent-three frame."""
-    for col in range(seen.shape[1]):
-        j = np.uint64(col)  # unsigned: no wrap-around, the loop vectorises
-        shown = seen[row, j] > 0
-        eight[0, j], eight[1, j], eight[2, j], eight[3, j] = oit_colour8(
-            sums[SUM_R, row, j] if shown else F32_ZERO, sums[SUM_G, row, j] if shown else F32_ZERO,
-            sums[SUM_B, row, j] if shown else F32_ZERO, sums[WEIGHT, row, j] if shown else F32_ZERO,
-            sums[TRANSMIT, row, j] if shown else F32_ONE)
-    for col in range(seen.shape[1]):
-        if seen[row, col] > 0:
-            rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = oit_over(
-                eight[0, col], eight[1, col], eight[2, col], eight[3, col], rgb[row, col, 0], rgb[row, col, 1],
-                rgb[row, col, 2])
 
 
 @njit(cache=True, inline="always")
@@ -439,6 +344,8 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                 for col in range(width):
                     seen[row, col] = 0
                 nearest[row - lo] = nearest_in_row(opaque_depth, row)
+            if not fill:
+                clear_oit_rows(sums, lo, hi)
             for k in range(setup.ccw.shape[0]):
                 if setup.rows[k, 0] > hi or setup.rows[k, 1] < lo:  # not on this strip
                     continue

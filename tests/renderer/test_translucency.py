@@ -17,8 +17,8 @@ from lab.shapes import cube, icosphere, quad
 from renderer import RenderOptions, render
 from renderer.raster import DEPTH_CLEAR, DEPTH_MAX
 from renderer.spans import whole_lanes
-from renderer.translucency import (DEPTH_PEELING, MODES, OIT, SORTED, STRIP_ROWS, batch_scratch, blend8,
-                                   composite_pixel, depth_order, fragment_lists, mul8)
+from renderer.translucency import (DEPTH_PEELING, MODES, OIT, SORTED, STRIP_ROWS, batch_scratch, composite_pixel,
+                                   depth_order, fragment_lists)
 from renderer.window import SUBPIXEL
 from .single_thread import one_thread
 
@@ -35,20 +35,7 @@ def composite(mode, colours, alphas, depths, behind, opaque_behind=False):
     return tuple(int(c) for c in out)
 
 
-# --------------------------------------------------------------------------- 8-bit and half-float arithmetic
-def test_mul8_is_the_rounded_product_over_255():
-    """Every pair of 8-bit values: mul8(a, b) = round(a·b/255) (no ties: a·b/255 is never k + ½)."""
-    a, b = np.meshgrid(np.arange(256), np.arange(256))
-    ours = np.array([[mul8(x, y) for x, y in zip(ra, rb)] for ra, rb in zip(a, b)])
-    np.testing.assert_array_equal(ours, np.rint(a * b / 255.0).astype(int))
-
-
-def test_blend8_saturates_at_255():
-    """200·255/255 + 200·255/255 = 400 → 255; 128·128/255 + 127·255/255 = 64 + 127 = 191."""
-    assert blend8(200, 255, 200, 255) == 255
-    assert blend8(128, 128, 127, 255) == 191
-
-
+# --------------------------------------------------------------------------- scratch
 @pytest.mark.parametrize("width", [1, 4, 9, 14])
 def test_a_strip_of_runs_padded_to_whole_lanes_fits_its_scratch(width):
     """Every way a row's pixels can fall in front of or behind the opaque surface (runs
