@@ -448,24 +448,30 @@ def test_the_tables_of_the_scene_layout_are_kept_across_frames_and_made_again_wh
     assert object_numbers([2, 0, 3]).tolist() == [0, 0, 2, 2, 2]
 
 
-@pytest.mark.parametrize("shading, model, computed", [("phong", "vtk", "none"), ("gouraud", "vtk", "none"),
-                                                      ("flat", "vtk", "shown"), ("flat", "opengl", "all")])
-def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, model, computed, monkeypatch):
+@pytest.mark.parametrize("shading, model, renumbered, computed", [
+    ("phong", "vtk", True, "none"), ("gouraud", "vtk", True, "none"), ("flat", "vtk", True, "shown"),
+    ("flat", "vtk", False, "all"), ("flat", "opengl", True, "all")])
+def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, model, renumbered, computed,
+                                                                       monkeypatch):
     """Flat shading reads the plane normals of the triangles it shows (lit per pixel under the
-    vtk model), or of every triangle (lit once each under opengl); phong and gouraud (vertex
-    normals) read none, and their frames skip working them out. Either way the frame has the
-    bytes of one that worked them all out, with the workspace's table poisoned first (stale
-    normals from an earlier frame cannot hide a frame that reads them unworked);
-    ``render_stages`` always has them all."""
+    vtk model, when the winners are renumbered; with the raster's numbers kept,
+    :func:`renderer.visible.renumbering_pays`, of every triangle), or of every triangle (lit
+    once each under opengl); phong and gouraud (vertex normals) read none, and their frames
+    skip working them out. Either way the frame has the bytes of one that worked them all
+    out, with the workspace's table poisoned first (stale normals from an earlier frame
+    cannot hide a frame that reads them unworked); ``render_stages`` always has them all."""
     import renderer.pipeline as pipeline
+    import renderer.visible
     from renderer.pipeline import render_stages
     from renderer.workspace import thread_workspace
 
+    monkeypatch.setattr(renderer.visible, "PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
     scene = load_scene("textbook-sphere").with_overrides(shading=shading, model=model)
     triangles = sum(o.mesh.n_triangles for o in scene.objects)
     monkeypatch.setattr(pipeline, "any_face_colour", lambda materials: True)
     expected = render(scene).rgb
     monkeypatch.undo()
+    monkeypatch.setattr(renderer.visible, "PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
     worked_out = []
     original = pipeline.face_normals_of
     monkeypatch.setattr(pipeline, "face_normals_of", lambda *a: worked_out.append(len(np.unique(a[2]))) or original(*a))
