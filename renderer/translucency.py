@@ -218,7 +218,6 @@ def composite_pixel(mode, fragments, m, behind, opaque_behind, out, order, acc, 
         back_to_front(colours, alpha, order, m, behind, acc, out)
 
 
-
 STRIP_ROWS = 16
 """Rows of a strip, the unit of work of :func:`shade_fragments`: every triangle is drawn over
 one strip before the next, so the strip's buffers stay in the cache while its layers
