@@ -98,6 +98,20 @@ def add_to_sum(total, colour, first, c0, count, lanes, a):
         total[p] = new if i < count else old
 
 
+@njit(cache=True, inline="always")
+def scale_and_add(total, c0, count, lanes, scale, offset):
+    """The weight's or the transmittance's step for a run (:func:`add_run_to_oit`):
+    ``total[c0 + i] = half(total[c0 + i]·scale + offset)`` for ``i < count`` of ``lanes`` lanes
+    (the others keep their values). The weight is ``scale`` 1, ``offset`` α (x·1 is x); the
+    transmittance ``scale`` 1 − α, ``offset`` 0 (a product of values ≥ 0 is never −0, so
+    adding 0 changes no bit): :func:`oit_add`'s bits."""
+    for i in range(lanes):
+        p = np.uint64(c0 + i)  # unsigned: no wrap-around, the loop vectorises
+        old = total[p]
+        new = half(old * scale + offset)
+        total[p] = new if i < count else old
+
+
 @njit(cache=True, from_python=False, refcounts=False)
 def add_run_to_oit(colour, first, a, row, c0, count, seen, sums):
     """A run's ``count`` fragments (linear colours: columns ``first`` … of ``colour`` (3, N)
@@ -119,17 +133,9 @@ def add_run_to_oit(colour, first, a, row, c0, count, seen, sums):
     add_to_sum(sums[SUM_R, row], colour[0], first, c0, count, lanes, a)
     add_to_sum(sums[SUM_G, row], colour[1], first, c0, count, lanes, a)
     add_to_sum(sums[SUM_B, row], colour[2], first, c0, count, lanes, a)
-    weight, transmit, seen_row, keep = sums[WEIGHT, row], sums[TRANSMIT, row], seen[row], F32_ONE - a
-    for i in range(lanes):
-        p = np.uint64(c0 + i)
-        old = weight[p]
-        new = half(old + a)
-        weight[p] = new if i < count else old
-    for i in range(lanes):
-        p = np.uint64(c0 + i)
-        old = transmit[p]
-        new = half(keep * old)
-        transmit[p] = new if i < count else old
+    scale_and_add(sums[WEIGHT, row], c0, count, lanes, F32_ONE, a)  # Σα + α
+    scale_and_add(sums[TRANSMIT, row], c0, count, lanes, F32_ONE - a, F32_ZERO)  # T·(1 − α)
+    seen_row = seen[row]
     for i in range(lanes):
         p = np.uint64(c0 + i)
         seen_row[p] += 1 if i < count else 0
