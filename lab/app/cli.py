@@ -149,7 +149,7 @@ def cmd_render(args) -> int:
     from renderer import render
     from renderer.compile_ahead import helped_cold_start
 
-    with helped_cold_start():  # an empty kernel cache: a second process compiles from the other end
+    with helped_cold_start():  # an empty kernel cache: a second process compiles a share of the kernels
         return _draw_to_png(args, render)
 
 

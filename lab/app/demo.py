@@ -90,7 +90,7 @@ def run_demo(out: Path, specs: list[str]) -> int:
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
     print(f"scanlab demo: comparing {len(specs)} scenes with VTK (the first run compiles the renderer's kernels)")
-    with helped_cold_start():  # an empty kernel cache: a second process compiles from the other end
+    with helped_cold_start():  # an empty kernel cache: a second process compiles a share of the kernels
         rows = _compare_all(out, specs, started)
     _progress(len(specs), len(specs), "done", started)
     print()

@@ -1,5 +1,5 @@
-"""A cold start compiles in two processes: a helper takes the first frame's kernels from the
-last one backwards (renderer/compile_ahead.py)."""
+"""A cold start compiles in two processes: the frame's process and a helper divide the first
+frame's kernels between them (renderer/compile_ahead.py)."""
 from __future__ import annotations
 
 import os
@@ -9,7 +9,7 @@ import time
 from pathlib import Path
 
 from renderer import compile_ahead
-from renderer.compile_ahead import first_frame_kernels, start_helper, stop_helper
+from renderer.compile_ahead import Kernel, divide, first_frame_kernels, helper_order, start_helper, stop_helper
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -72,7 +72,8 @@ def test_a_list_that_cannot_be_read_compiles_nothing_ahead(tmp_path):
     broken = tmp_path / "kernels.pickle"
     broken.write_bytes(b"not a pickle")
     assert first_frame_kernels(broken) == [] and first_frame_kernels(tmp_path / "missing") == []
-    compile_ahead.compile_backwards([])  # nothing to do, no error
+    compile_ahead.compile_in_order([])  # nothing to do, no error
+    assert divide([]) == ([], []) and helper_order([]) == []
 
 
 def test_stopping_ends_a_helper_still_at_work():
@@ -86,8 +87,11 @@ def test_stopping_ends_a_helper_still_at_work():
 def test_the_helper_runs_while_the_block_does_and_is_stopped_after_it(monkeypatch):
     busy = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
     monkeypatch.setattr(compile_ahead, "start_helper", lambda: busy)
+    compiled = []
+    monkeypatch.setattr(compile_ahead, "compile_in_order", compiled.append)
     with compile_ahead.helped_cold_start() as helper:
         assert helper is busy and busy.poll() is None
+        assert compiled == [divide(first_frame_kernels())[1]]  # the frame's share, before the block
     assert busy.poll() is not None
 
 
@@ -113,3 +117,30 @@ def test_scanlab_render_on_an_empty_cache_draws_the_same_picture_and_leaves_no_h
         outputs.append(out.read_bytes())
         assert _helpers_running() == []
     assert outputs[0] == outputs[1]
+
+
+def _kernels(*seconds) -> list[Kernel]:
+    return [Kernel("renderer.m", f"k{i}", (), s) for i, s in enumerate(seconds)]
+
+
+def test_the_helper_takes_the_longest_compile_and_others_within_half_the_total():
+    kernels = _kernels(1.0, 0.5, 8.0, 0.2, 4.0, 0.3)  # 14 s in all: the helper's share at most 7 s, but 8 s first
+    helper, frame = divide(kernels)
+    assert [k.name for k in helper] == ["k2"]
+    assert [k.name for k in frame] == ["k0", "k1", "k3", "k4", "k5"]  # the frame's in the order recorded
+    helper, frame = divide(_kernels(3.0, 1.0, 2.0, 0.5, 2.5))  # 9 s: 3 + 1 + 0.5 within 4.5, longest first
+    assert [k.name for k in helper] == ["k0", "k1", "k3"] and [k.name for k in frame] == ["k2", "k4"]
+
+
+def test_alone_the_helper_compiles_every_kernel_once_its_own_share_first():
+    kernels = _kernels(1.0, 0.5, 8.0, 0.2, 4.0, 0.3)
+    order = helper_order(kernels)
+    assert [k.name for k in order] == ["k2", "k5", "k4", "k3", "k1", "k0"]
+    assert sorted(order) == sorted(kernels)
+
+
+def test_the_recorded_list_says_how_long_each_kernel_took():
+    kernels = first_frame_kernels()
+    assert all(k.seconds > 0 for k in kernels)
+    helper, frame = divide(kernels)
+    assert helper and frame and len(helper) + len(frame) == len(kernels) and set(helper + frame) == set(kernels)
