@@ -23,6 +23,7 @@ import numpy as np
 from renderer.float32_math import unorm8
 from renderer.jit import njit, prange
 from renderer.lit_colours import face_colour
+from renderer.prefetch import prefetch_row
 from renderer.raster import EMPTY
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, any_face_colour
 from renderer.reflection.registry import light_points, span_normal_only, spans_normal_only, store_span
@@ -60,13 +61,28 @@ def held_colours(frags, geo, materials, lights, points, colour, stored, out):
     An object's triangles are lit together, as one run of points (``points`` (6, ≥ K),
     ``colour`` (3, ≥ K) float32 and ``stored`` (≥ K, 3) uint8 scratch): one call, whose loop
     runs 8 triangles at a time. The positions are not needed (the colour depends on the
-    normal alone) and are 0."""
+    normal alone) and are 0.
+
+    The winners come in the order the image shows them, so the rows read for each are at
+    random over the mesh's tables: the rows of the triangle 16 on (its object, corners and
+    plane normal) and the first corner of the one 8 on (whose position says which way the
+    normal turns) are asked for ahead (:mod:`renderer.prefetch`). Measured, the kernel alone
+    on its frame's input, this against no reading ahead: ico7-flat 0.88–0.95 of the time at
+    512², 0.93 at 1024², menger4 at 512² 0.87. Written out in the loop: as a function of the
+    frame's tables, inlined or not, it took 3–5 times as long (reference counts)."""
     count = frags.clip_source.shape[0]
     for o in range(materials.shading_path.shape[0]):
         if not held_per_triangle(o, materials, lights):
             continue
         n = 0
         for k in range(count):
+            if k + 16 < count:  # read ahead, written out here: a call would count references to the tables
+                ahead = frags.clip_source[k + 16]
+                prefetch_row(geo.triangles, ahead)
+                prefetch_row(geo.face_normals, ahead)
+                prefetch_row(geo.tri_object, ahead)
+            if k + 8 < count and not geo.parallel:
+                prefetch_row(geo.verts_view, geo.triangles[frags.clip_source[k + 8], 0])
             s = frags.clip_source[k]
             if geo.tri_object[s] == o:
                 nx, ny, nz = face_toward_viewer(geo, s)
