@@ -27,7 +27,7 @@ from renderer.prefetch import prefetch_row
 from renderer.raster import EMPTY
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, any_face_colour
 from renderer.reflection.registry import light_points, span_normal_only, spans_normal_only, store_span
-from renderer.spans import F0, face_toward_viewer
+from renderer.spans import AHEAD_CORNERS, AHEAD_SOURCE, F0, face_toward_viewer
 from renderer.workspace import empty
 
 
@@ -64,9 +64,10 @@ def held_colours(frags, geo, materials, lights, points, colour, stored, out):
     normal alone) and are 0.
 
     The winners come in the order the image shows them, so the rows read for each are at
-    random over the mesh's tables: the rows of the triangle 16 on (its object, corners and
-    plane normal) and the first corner of the one 8 on (whose position says which way the
-    normal turns) are asked for ahead (:mod:`renderer.prefetch`). Measured, the kernel alone
+    random over the mesh's tables: the rows of the triangle :data:`~renderer.spans.AHEAD_SOURCE`
+    on (its object, corners and plane normal) and the first corner of the one
+    :data:`~renderer.spans.AHEAD_CORNERS` on (whose position says which way the normal turns),
+    as the span table does, are asked for ahead (:mod:`renderer.prefetch`). Measured, the kernel alone
     on its frame's input, this against no reading ahead: ico7-flat 0.88–0.95 of the time at
     512², 0.93 at 1024², menger4 at 512² 0.87. Written out in the loop: as a function of the
     frame's tables, inlined or not, it took 3–5 times as long (reference counts)."""
@@ -76,13 +77,13 @@ def held_colours(frags, geo, materials, lights, points, colour, stored, out):
             continue
         n = 0
         for k in range(count):
-            if k + 16 < count:  # read ahead, written out here: a call would count references to the tables
-                ahead = frags.clip_source[k + 16]
+            if k + AHEAD_SOURCE < count:  # read ahead, written out here: a call would count references to the tables
+                ahead = frags.clip_source[k + AHEAD_SOURCE]
                 prefetch_row(geo.triangles, ahead)
                 prefetch_row(geo.face_normals, ahead)
                 prefetch_row(geo.tri_object, ahead)
-            if k + 8 < count and not geo.parallel:
-                prefetch_row(geo.verts_view, geo.triangles[frags.clip_source[k + 8], 0])
+            if k + AHEAD_CORNERS < count and not geo.parallel:
+                prefetch_row(geo.verts_view, geo.triangles[frags.clip_source[k + AHEAD_CORNERS], 0])
             s = frags.clip_source[k]
             if geo.tri_object[s] == o:
                 nx, ny, nz = face_toward_viewer(geo, s)

@@ -132,7 +132,7 @@ AHEAD_SOURCE, AHEAD_CORNERS = 16, 8
 """How many triangles ahead :func:`read_ahead` asks for a triangle's own rows, and for its
 corners' rows (these need the triangle's corners, asked for earlier). Measured, the span
 table alone on its frame's input, in one process, this against no reading ahead:
-igea-270k at 512² 0.68–0.75 of the time on one thread, 0.85–0.93 on two; ico7-phong at
+igea-270k at 512² 0.68–0.75 of the time on one thread, 0.85–0.94 on two; ico7-phong at
 1024², two threads, 0.81–0.84 (8 and 4 ahead, or 32 and 16, were no better)."""
 
 
