@@ -1,6 +1,4 @@
 """``python -m lab`` works like ``scanlab``."""
-import sys
+from lab.app.cli import run
 
-from lab.app.cli import main
-
-sys.exit(main())
+run()
