@@ -44,6 +44,7 @@ from pathlib import Path
 from typing import NamedTuple
 
 from lab.atomic import atomic_file
+from lab.collector import fewer_collections
 
 KERNELS_FILE = Path(__file__).with_name("first_frame_kernels.pickle")
 """The first frame's kernels, argument types and compile times (a pickle of numba types; :func:`record`)."""
@@ -172,7 +173,8 @@ def main(argv: list[str]) -> int:
         kernels = record()
         print(f"wrote {KERNELS_FILE}: {len(kernels)} kernels")
         return 0
-    compile_in_order(helper_order(first_frame_kernels()))
+    with fewer_collections():  # compiling makes objects that live on (lab.collector)
+        compile_in_order(helper_order(first_frame_kernels()))
     return 0
 
 

@@ -18,8 +18,9 @@ from lab.app.demo import scene_name
 from lab.app.exercises.command import add_parser as add_exercise_parser
 from lab.app.live import live_command
 from lab.app.option_types import image_size, number, whole
-from lab.app.short_lived import collections_paused, exit_now
+from lab.app.process_exit import exit_now
 from lab.app.sweep import sweep_command
+from lab.collector import collections_paused, fewer_collections
 from lab.loading import LARGE_SIZE, MAX_SIZE, SceneError, load_scene, size_problem
 from lab.presets import SCENES_DIR, preset_description, preset_names
 from lab.scene import MODELS, SHADINGS
@@ -147,11 +148,11 @@ def _draw_to_png(args, draw) -> int:
 
 
 def cmd_render(args) -> int:
-    with collections_paused():  # importing numba makes some 10^5 objects and no garbage (lab.app.short_lived)
+    with collections_paused():  # importing numba makes some 10^5 objects and no garbage (lab.collector)
         from renderer import render
         from renderer.compile_ahead import helped_cold_start
 
-    with helped_cold_start():  # an empty kernel cache: a second process compiles a share of the kernels
+    with fewer_collections(), helped_cold_start():  # an empty kernel cache: a helper compiles a share of the kernels
         return _draw_to_png(args, render)
 
 
@@ -473,7 +474,7 @@ def main(argv=None) -> int:
 
 def run() -> None:
     """The ``scanlab`` command: :func:`main` on the process's arguments, then the process ends
-    without tearing its modules down (:mod:`lab.app.short_lived`)."""
+    without tearing its modules down (:mod:`lab.app.process_exit`)."""
     exit_now(main())
 
 

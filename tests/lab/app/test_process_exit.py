@@ -1,18 +1,14 @@
-"""A short-lived command process: no collections while it starts, no teardown when it ends."""
-import gc
+"""A command's process ends without the interpreter's teardown, after its threads, atexit handlers and streams."""
 import os
 import subprocess
 import sys
 import textwrap
 
-import pytest
-
-from lab.app import short_lived
-from lab.app.short_lived import collections_paused, exit_now
+from lab.app import process_exit
 
 ENDING = textwrap.dedent("""
     import atexit, sys, threading, time
-    from lab.app.short_lived import exit_now
+    from lab.app.process_exit import exit_now
 
     class Noisy:
         def __del__(self):
@@ -60,42 +56,5 @@ def test_a_reader_that_left_is_not_an_error():
         def flush(self):
             raise BrokenPipeError
 
-    short_lived._flush(Gone())
-    short_lived._flush(None)
-
-
-def test_collections_are_paused_in_the_block_and_on_again_after():
-    assert gc.isenabled()
-    with collections_paused():
-        assert not gc.isenabled()
-    assert gc.isenabled()
-    gc.unfreeze()
-
-
-def test_collections_are_on_again_after_an_error_in_the_block():
-    with pytest.raises(RuntimeError):
-        with collections_paused():
-            raise RuntimeError("in the block")
-    assert gc.isenabled()
-    gc.unfreeze()
-
-
-def test_collections_stay_off_if_they_were_off_before():
-    gc.disable()
-    try:
-        with collections_paused():
-            pass
-        assert not gc.isenabled()
-    finally:
-        gc.enable()
-        gc.unfreeze()
-
-
-def test_what_survives_the_block_is_frozen():
-    gc.unfreeze()
-    with collections_paused():
-        kept = [[] for _ in range(100)]
-    try:
-        assert gc.get_freeze_count() >= len(kept)
-    finally:
-        gc.unfreeze()
+    process_exit._flush(Gone())
+    process_exit._flush(None)
