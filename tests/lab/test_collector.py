@@ -1,5 +1,4 @@
 """The collector's settings for a process that starts, compiles kernels and ends."""
-import contextlib
 import gc
 
 import pytest
@@ -61,7 +60,8 @@ def test_fewer_collections_set_the_threshold_back_after_an_error():
 
 
 def test_fewer_collections_run_fewer_passes():
-    """Counted with the collector's own callback: 50,000 new objects that live on."""
+    """Counted with the collector's own callback: 50,000 new objects that live on (the
+    default threshold set explicitly: the suite runs with fewer collections, tests/conftest.py)."""
     def passes(block):
         count = [0]
 
@@ -77,6 +77,6 @@ def test_fewer_collections_run_fewer_passes():
         del kept
         return count[0]
 
-    assert passes(fewer_collections) * 10 < passes(contextlib.nullcontext)
+    assert passes(fewer_collections) * 10 < passes(lambda: fewer_collections(700))
 
 
