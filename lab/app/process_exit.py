@@ -4,10 +4,11 @@ After a fresh ``scanlab render`` has written its PNG, the interpreter's shutdown
 about a third of a second: it freed numba's and llvmlite's tens of thousands of objects
 (typing templates, dispatchers, LLVM handles) one at a time, although the operating system
 takes the whole process back at once. :func:`exit_now` does what the shutdown must do for a
-command, in the shutdown's order: it waits for the threads the command started that are not
-daemons, runs the ``atexit`` handlers, and flushes the standard streams. Then it ends the
+command: it runs the ``atexit`` handlers and flushes the standard streams, then ends the
 process with ``os._exit``: modules' objects are not freed one by one, and their ``__del__``
-methods do not run.
+methods do not run. While a thread other than the main one that is not a daemon is alive (a
+thread pool's workers, which leave when the shutdown tells them to), it leaves the ending to
+the interpreter's shutdown, which stops and joins them in its own order.
 
 Only the command line's entry points end the process (``scanlab`` and ``python -m lab``);
 tests call :func:`lab.app.cli.main`, which returns its exit code.
@@ -18,11 +19,9 @@ import sys
 import threading
 
 
-def _wait_for_threads() -> None:
-    """Join every thread that is neither the main thread nor a daemon, as the shutdown does."""
-    for thread in threading.enumerate():
-        if thread is not threading.main_thread() and not thread.daemon:
-            thread.join()
+def _threads_to_join() -> bool:
+    """Whether a thread other than the main one, not a daemon, is alive (the shutdown would join it)."""
+    return any(t is not threading.main_thread() and not t.daemon and t.is_alive() for t in threading.enumerate())
 
 
 def _flush(stream) -> None:
@@ -36,9 +35,11 @@ def _flush(stream) -> None:
 
 
 def exit_now(code) -> None:
-    """End the process with exit status ``code`` (an int, or None for 0) after the threads,
-    ``atexit`` handlers and standard streams are done, without the interpreter's teardown."""
-    _wait_for_threads()
+    """End the process with exit status ``code`` (an int, or None for 0) after the ``atexit``
+    handlers and standard streams are done, without the interpreter's teardown; with threads
+    to join (:func:`_threads_to_join`), through the interpreter's shutdown (``sys.exit``)."""
+    if _threads_to_join():
+        sys.exit(code)
     atexit._run_exitfuncs()
     _flush(sys.stdout)
     _flush(sys.stderr)

@@ -21,24 +21,44 @@ ENDING = textwrap.dedent("""
         time.sleep(0.3)
         open(sys.argv[1] + "/thread", "w").close()
 
-    threading.Thread(target=late).start()
+    if "thread" in sys.argv[2:]:
+        threading.Thread(target=late).start()
     sys.stdout.write("no newline, still buffered")
     {end}
 """)
 
 
-def _run(tmp_path, end: str):
+def _run(tmp_path, end: str, *options: str):
     buffered = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}  # stdout to a pipe keeps its buffer
-    return subprocess.run([sys.executable, "-c", ENDING.format(end=end), str(tmp_path)],
+    return subprocess.run([sys.executable, "-c", ENDING.format(end=end), str(tmp_path), *options],
                           capture_output=True, text=True, timeout=60, env=buffered)
 
 
-def test_exit_now_waits_for_threads_runs_atexit_flushes_and_skips_the_teardown(tmp_path):
+def test_exit_now_runs_atexit_flushes_and_skips_the_teardown(tmp_path):
     done = _run(tmp_path, "exit_now(3)")
     assert done.returncode == 3
     assert done.stdout == "no newline, still buffered"
-    assert (tmp_path / "thread").exists() and (tmp_path / "atexit").exists()
+    assert (tmp_path / "atexit").exists()
     assert "torn down" not in done.stderr
+
+
+def test_with_a_thread_to_join_exit_now_leaves_the_ending_to_the_shutdown(tmp_path):
+    """A live thread that is not a daemon: joined (its file is written), then the teardown runs."""
+    done = _run(tmp_path, "exit_now(3)", "thread")
+    assert done.returncode == 3
+    assert done.stdout == "no newline, still buffered"
+    assert (tmp_path / "thread").exists() and (tmp_path / "atexit").exists()
+    assert "torn down" in done.stderr
+
+
+def test_a_thread_pool_left_open_does_not_hang_the_exit(tmp_path):
+    """concurrent.futures' idle workers leave only when the shutdown tells them to."""
+    script = ("from concurrent.futures import ThreadPoolExecutor\n"
+              "from lab.app.process_exit import exit_now\n"
+              "pool = ThreadPoolExecutor(2); pool.submit(print, 'ran').result()\n"
+              "exit_now(0)\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=20)
+    assert done.returncode == 0 and done.stdout == "ran\n"
 
 
 def test_the_plain_exit_tears_down_what_exit_now_skips(tmp_path):
