@@ -32,6 +32,7 @@ locator classes, the one numba's own ``NUMBA_CACHE_LOCATOR_CLASSES`` fills).
 from __future__ import annotations
 
 import fcntl
+import functools
 import hashlib
 import os
 import shutil
@@ -232,10 +233,19 @@ class SourceTreeLocator(_CacheLocator):
     def get_disambiguator(self):
         return self._disambiguator
 
+    def ensure_cache_path(self):
+        """numba's check that the folder exists and takes a file, once per folder and process:
+        numba's own makes and deletes a temporary file for each of the ~190 kernels a
+        ``scanlab render`` imports (with resolving each kernel's file, about 40 ms of a warm
+        start)."""
+        if self._path not in _WRITABLE_FOLDERS:
+            super().ensure_cache_path()
+            _WRITABLE_FOLDERS.add(self._path)
+
     @classmethod
     def from_function(cls, py_func, py_file):
         try:
-            inside = Path(py_file).resolve().is_relative_to(SOURCE_DIR)
+            inside = _in_source_tree(py_file)
         except OSError:
             return None
         if not inside:
@@ -246,6 +256,16 @@ class SourceTreeLocator(_CacheLocator):
         except OSError:
             return None
         return locator
+
+
+_WRITABLE_FOLDERS: set[str] = set()
+"""Cache folders :meth:`SourceTreeLocator.ensure_cache_path` found writable in this process."""
+
+
+@functools.lru_cache(maxsize=None)
+def _in_source_tree(py_file: str) -> bool:
+    """Whether ``py_file`` lies in the renderer's sources (resolved once per file and process)."""
+    return Path(py_file).resolve().is_relative_to(SOURCE_DIR)
 
 
 if SourceTreeLocator not in CacheImpl._locator_classes:

@@ -207,6 +207,35 @@ def test_kernels_are_filed_under_this_trees_hash():
     assert jit.SourceTreeLocator in __import__("numba").core.caching.CacheImpl._locator_classes
 
 
+def test_the_cache_folder_is_checked_once_per_process(monkeypatch):
+    """numba's check (a temporary file made and deleted) runs for the first kernel filed in a
+    folder, not for each of the ~190 a render imports; a kernel outside the sources gets no locator."""
+    from numba.core.caching import _CacheLocator
+    from renderer import shading, spans
+
+    checks = []
+    monkeypatch.setattr(_CacheLocator, "ensure_cache_path", lambda self: checks.append(self.get_cache_path()))
+    monkeypatch.setattr(jit, "_WRITABLE_FOLDERS", set())
+    for kernel in (shading.shade_rows_lit_spans, spans.span_table_of_corners, shading.shade_rows):
+        f = kernel.py_func
+        assert jit.SourceTreeLocator.from_function(f, f.__code__.co_filename) is not None
+    assert checks == [str(jit.cache_folder())]
+    assert jit.SourceTreeLocator.from_function(ast.walk, ast.__file__) is None
+
+
+def test_a_cache_folder_that_takes_no_file_gives_no_locator(monkeypatch):
+    from numba.core.caching import _CacheLocator
+    from renderer import shading
+
+    def refuse(self):
+        raise PermissionError("read-only")
+
+    monkeypatch.setattr(_CacheLocator, "ensure_cache_path", refuse)
+    monkeypatch.setattr(jit, "_WRITABLE_FOLDERS", set())
+    f = shading.shade_rows.py_func
+    assert jit.SourceTreeLocator.from_function(f, f.__code__.co_filename) is None
+
+
 def kernels(tree):
     """The functions of a module decorated with ``njit`` (bare or called)."""
     for node in ast.walk(tree):
