@@ -8,7 +8,9 @@ command: it runs the ``atexit`` handlers and flushes the standard streams, then 
 process with ``os._exit``: modules' objects are not freed one by one, and their ``__del__``
 methods do not run. While a thread other than the main one that is not a daemon is alive (a
 thread pool's workers, which leave when the shutdown tells them to), it leaves the ending to
-the interpreter's shutdown, which stops and joins them in its own order.
+the interpreter's shutdown, which stops and joins them in its own order. So it does while a
+profiler or tracer watches (``python -m cProfile -m lab …`` writes its figures after the
+program returns; coverage and debuggers trace).
 
 Only the command line's entry points end the process (``scanlab`` and ``python -m lab``);
 tests call :func:`lab.app.cli.main`, which returns its exit code.
@@ -24,6 +26,11 @@ def _threads_to_join() -> bool:
     return any(t is not threading.main_thread() and not t.daemon and t.is_alive() for t in threading.enumerate())
 
 
+def _watched() -> bool:
+    """Whether a profiler or a tracer is set (``sys.getprofile``, ``sys.gettrace``)."""
+    return sys.getprofile() is not None or sys.gettrace() is not None
+
+
 def _flush(stream) -> None:
     """Flush a standard stream; a reader that has gone away (``scanlab … | head``) is not an error."""
     if stream is None:
@@ -37,8 +44,9 @@ def _flush(stream) -> None:
 def exit_now(code) -> None:
     """End the process with exit status ``code`` (an int, or None for 0) after the ``atexit``
     handlers and standard streams are done, without the interpreter's teardown; with threads
-    to join (:func:`_threads_to_join`), through the interpreter's shutdown (``sys.exit``)."""
-    if _threads_to_join():
+    to join (:func:`_threads_to_join`) or a profiler watching (:func:`_watched`), through the
+    interpreter's shutdown (``sys.exit``)."""
+    if _threads_to_join() or _watched():
         sys.exit(code)
     atexit._run_exitfuncs()
     _flush(sys.stdout)

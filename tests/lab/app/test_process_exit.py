@@ -67,6 +67,16 @@ def test_the_plain_exit_tears_down_what_exit_now_skips(tmp_path):
     assert done.returncode == 3 and "torn down" in done.stderr
 
 
+def test_a_profiler_still_writes_its_figures(tmp_path):
+    """python -m cProfile writes after the program returns: exit_now leaves the ending to the shutdown."""
+    script = tmp_path / "ends.py"
+    script.write_text("from lab.app.process_exit import exit_now\nexit_now(0)\n")
+    figures = tmp_path / "figures.prof"
+    done = subprocess.run([sys.executable, "-m", "cProfile", "-o", str(figures), str(script)],
+                          capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0 and figures.exists()
+
+
 def test_exit_now_of_none_is_success(tmp_path):
     assert _run(tmp_path, "exit_now(None)").returncode == 0
 
