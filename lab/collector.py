@@ -6,7 +6,7 @@ tenth run also walks the older objects, every hundredth all of them. Importing n
 compiling kernels make hundreds of thousands of objects that live on, so most of those runs
 find nothing:
 
-- **Importing.** Importing the renderer's modules ran 175 passes (about 50 ms of a warm
+- **Importing.** Importing the renderer's modules ran 175 passes (about 60 ms of a warm
   start of about 1 s). :func:`collections_paused` turns the collector off for a ``with``
   block and, at its end, moves what the block made into the collector's permanent
   generation (``gc.freeze``), so later passes do not walk it again; then it turns the

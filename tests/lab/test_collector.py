@@ -78,5 +78,3 @@ def test_fewer_collections_run_fewer_passes():
         return count[0]
 
     assert passes(fewer_collections) * 10 < passes(lambda: fewer_collections(700))
-
-

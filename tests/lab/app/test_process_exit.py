@@ -51,7 +51,7 @@ def test_with_a_thread_to_join_exit_now_leaves_the_ending_to_the_shutdown(tmp_pa
     assert "torn down" in done.stderr
 
 
-def test_a_thread_pool_left_open_does_not_hang_the_exit(tmp_path):
+def test_a_thread_pool_left_open_does_not_hang_the_exit():
     """concurrent.futures' idle workers leave only when the shutdown tells them to."""
     script = ("from concurrent.futures import ThreadPoolExecutor\n"
               "from lab.app.process_exit import exit_now\n"
