@@ -242,8 +242,10 @@ def write_whole(counts, cut, offsets, source, piece):
     """Third pass, in source order: where each triangle's entries start, ``offsets[t]`` (T + 1,),
     the prefix sums of ``counts`` (the last: how many in all, which this returns), and the
     entry of each triangle kept whole, which names it, no piece. One loop with the sums:
-    numpy's ``cumsum`` of a 327,680-triangle sphere's counts alone took 1 ms."""
-    k = 0
+    numpy's ``cumsum`` of a 327,680-triangle sphere's counts alone took 1 ms. The sum is an
+    int64 from the start (as plain Python, ``NUMBA_DISABLE_JIT``, a Python 0 plus the uint8
+    counts became a uint8 that wrapped at 256)."""
+    k = np.int64(0)
     for t in range(counts.shape[0]):
         offsets[t] = k
         if counts[t] and not cut[t]:

@@ -289,3 +289,20 @@ def test_a_corner_index_names_a_whole_triangles_vertices_and_a_pieces_own_rows()
     whole = np.empty((3, 3), np.int64)
     corner_rows(CornerIndex.of_whole(3), whole)
     assert whole.tolist() == [[0, 1, 2], [3, 4, 5], [6, 7, 8]]
+
+
+def test_the_offsets_of_more_than_255_entries_sum_without_wrapping_as_plain_python():
+    """write_whole sums the per-triangle counts (uint8: at most 9 entries a triangle) into
+    offsets; as plain Python (the kernel's ``py_func``, as under NUMBA_DISABLE_JIT) the sum
+    must not wrap at 256 as a uint8 would, and the jitted kernel gives the same."""
+    from renderer.clip import write_whole
+
+    n = 300
+    counts, cut = np.ones(n, np.uint8), np.zeros(n, np.bool_)
+    counts[::7] = 0  # rejected triangles: no entry
+    for kernel in (write_whole.py_func, write_whole):
+        offsets, source, piece = np.zeros(n + 1, np.int64), np.full(n, -7, np.int32), np.zeros(n, np.int32)
+        total = kernel(counts, cut, offsets, source, piece)
+        assert total == counts.sum() > 255
+        np.testing.assert_array_equal(offsets, np.concatenate([[0], np.cumsum(counts)]))
+        np.testing.assert_array_equal(source[:total], np.flatnonzero(counts))
