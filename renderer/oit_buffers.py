@@ -17,7 +17,6 @@ import numpy as np
 from renderer.float32_math import half, unorm8
 from renderer.jit import njit
 from renderer.min_max import larger, smaller
-from renderer.spans import round_up_to_lanes
 
 F32_ZERO = np.float32(0.0)
 F32_ONE = np.float32(1.0)
@@ -69,91 +68,65 @@ def oit_over(r8, g8, b8, a8, r, g, b):
 
 
 SUM_R, SUM_G, SUM_B, WEIGHT, TRANSMIT = range(5)
-"""The ``oit`` buffers as :func:`shade_fragments` keeps them: five (H, W) float32 planes
-holding half-float values, the sums Σαr, Σαg, Σαb, the weight Σα and the transmittance
-Π(1 − α). Each strip's rows are cleared to no fragment yet (:func:`clear_oit_rows`) before its
-triangles are drawn, so adding a fragment is the same sum for a pixel's first one as for the rest."""
+"""The ``oit`` buffers of a pixel as :func:`shade_fragments` keeps them: five float32 values
+holding half floats, side by side (a strip (rows, W, 5) for a strip of rows: the pixels of
+a row one after another, each pixel's five values together), the sums Σαr, Σαg, Σαb, the
+weight Σα and the transmittance Π(1 − α). A strip is cleared to no fragment yet
+(:func:`clear_oit_strip`) before its triangles are drawn, so adding a fragment is the same
+sum for a pixel's first one as for the rest."""
+
+OIT_VALUES = 5
+"""Values of a pixel's ``oit`` buffers (:data:`SUM_R` … :data:`TRANSMIT`)."""
 
 
 @njit(cache=True, inline="always")
-def clear_oit_rows(sums, lo, hi):
-    """Rows ``lo … hi`` of the ``oit`` buffers ``sums`` (5, H, W) as a pixel without fragments
-    holds them: zero sums and weight, transmittance 1."""
-    for row in range(lo, hi + 1):
-        for c in range(TRANSMIT):
-            sums[c, row, :] = F32_ZERO
-        sums[TRANSMIT, row, :] = F32_ONE
+def clear_oit_strip(strip):
+    """The ``oit`` buffers ``strip`` (rows, W, 5) as pixels without fragments hold them: zero
+    sums and weight, transmittance 1."""
+    for row in range(strip.shape[0]):
+        for col in range(strip.shape[1]):
+            for c in range(TRANSMIT):
+                strip[row, col, c] = F32_ZERO
+            strip[row, col, TRANSMIT] = F32_ONE
 
 
 @njit(cache=True, inline="always")
-def add_to_sum(total, colour, first, c0, count, lanes, a):
-    """One channel of a run (:func:`add_run_to_oit`): ``total[c0 + i] += α·colour[first + i]``
-    rounded to half (:func:`oit_add`'s step), for ``i < count`` of ``lanes`` lanes (the
-    others keep their values). Two arrays in the loop, so the vectoriser's run-time overlap
-    test is one comparison and its vector body runs from eight lanes on."""
-    for i in range(lanes):
-        p, j = np.uint64(c0 + i), np.uint64(first + i)  # unsigned: no wrap-around, the loop vectorises
-        old = total[p]
-        new = half(old + colour[j] * a)
-        total[p] = new if i < count else old
-
-
-@njit(cache=True, inline="always")
-def scale_and_add(total, c0, count, lanes, scale, offset):
-    """The weight's or the transmittance's step for a run (:func:`add_run_to_oit`):
-    ``total[c0 + i] = half(total[c0 + i]·scale + offset)`` for ``i < count`` of ``lanes`` lanes
-    (the others keep their values). The weight is ``scale`` 1, ``offset`` α (x·1 is x); the
-    transmittance ``scale`` 1 − α, ``offset`` 0 (a product of values ≥ 0 is never −0, so
-    adding 0 changes no bit): :func:`oit_add`'s bits."""
-    for i in range(lanes):
-        p = np.uint64(c0 + i)  # unsigned: no wrap-around, the loop vectorises
-        old = total[p]
-        new = half(old * scale + offset)
-        total[p] = new if i < count else old
-
-
-@njit(cache=True, from_python=False, refcounts=False)
-def add_run_to_oit(colour, first, a, row, c0, count, seen, sums):
+def add_run_to_oit(colour, first, a, c0, count, seen_row, buffers):
     """A run's ``count`` fragments (linear colours: columns ``first`` … of ``colour`` (3, N)
-    float32, alpha ``a``; pixels ``c0`` … of ``row``) added to the pixels' ``oit`` buffers
-    ``sums`` (5, H, W) (:func:`oit_add`'s five steps) and counted in ``seen`` (H, W).
+    float32, alpha ``a``; pixels ``c0`` … of one row) added to the pixels' ``oit`` buffers
+    ``buffers`` (W, 5), the row's in a strip (:func:`oit_add`'s five steps, the same bits),
+    and counted in ``seen_row`` (W,).
 
-    One loop a buffer, over whole vector lanes (:data:`~renderer.spans.LANES`; the pixels
-    past the run keep their values) where the row and ``colour`` have room for them, else
-    over the run alone: the same bits as :func:`oit_add` a fragment at a time. In one loop
-    over the six buffers, LLVM's test that they do not overlap took 40-odd comparisons and
-    it kept the vector body for runs of 112 fragments or more: a translucent-three run (6 to
-    30 pixels) went through the scalar loop. Measured alone, ns a fragment, one loop → one
-    a buffer in lanes: runs of about 6 pixels 7.4–9.3 → 5.1, 12: 5.3 → 3.3, 30: 3.9 → 2.2,
-    100: 3.5 → 1.5. Compiled on its own, without reference counts (the row views cost
-    nothing to take)."""
-    lanes = round_up_to_lanes(count)
-    if c0 + lanes > seen.shape[1] or first + lanes > colour.shape[1]:
-        lanes = count
-    add_to_sum(sums[SUM_R, row], colour[0], first, c0, count, lanes, a)
-    add_to_sum(sums[SUM_G, row], colour[1], first, c0, count, lanes, a)
-    add_to_sum(sums[SUM_B, row], colour[2], first, c0, count, lanes, a)
-    scale_and_add(sums[WEIGHT, row], c0, count, lanes, F32_ONE, a)  # Σα + α
-    scale_and_add(sums[TRANSMIT, row], c0, count, lanes, F32_ONE - a, F32_ZERO)  # T·(1 − α)
-    seen_row = seen[row]
-    for i in range(lanes):
-        p = np.uint64(c0 + i)
-        seen_row[p] += 1 if i < count else 0
+    A pixel's five values lie together, so a fragment reads and writes one short stretch of
+    memory. Measured alone on runs of 4 to 19 pixels, ns a fragment: five planes (one loop a
+    plane, in whole vector lanes) 7.3, together 3.5; in a translucent-three frame the five
+    planes took 15 ns a fragment."""
+    t = F32_ONE - a
+    for i in range(count):
+        p, j = np.uint64(c0 + i), np.uint64(first + i)  # unsigned: no wrap-around
+        v = buffers[p]
+        v[SUM_R] = half(v[SUM_R] + colour[0, j] * a)
+        v[SUM_G] = half(v[SUM_G] + colour[1, j] * a)
+        v[SUM_B] = half(v[SUM_B] + colour[2, j] * a)
+        v[WEIGHT] = half(v[WEIGHT] + a)
+        v[TRANSMIT] = half(v[TRANSMIT] * t)  # (1 − α)·T: a product, commutative, the same bits
+        seen_row[p] += 1
 
 
 @njit(cache=True, inline="always")
-def resolve_oit_row(sums, seen, row, rgb, eight):
-    """Every pixel of ``row`` that got a fragment: its ``oit`` buffers over ``rgb`` (as :func:`oit_resolve`).
-    First every pixel's 8-bit colour and coverage (:func:`oit_colour8`) into ``eight`` (4, ≥ W) uint8, no
-    branch, 8 lanes at a time (a pixel without fragments holds clear buffers, :func:`clear_oit_rows`); then
-    those with a fragment blended over ``rgb``. In one loop this ran scalar: 14 % of a translucent-three frame."""
-    for col in range(seen.shape[1]):
-        j = np.uint64(col)  # unsigned: no wrap-around, the loop vectorises
+def resolve_oit_row(buffers, seen_row, rgb_row, eight):
+    """Every pixel of a row that got a fragment: its ``oit`` buffers (``buffers`` (W, 5), the
+    row's in a strip) over ``rgb_row`` (W, 3) uint8 (as :func:`oit_resolve`). First every
+    pixel's 8-bit colour and coverage (:func:`oit_colour8`) into ``eight`` (4, ≥ W) uint8, no
+    branch (a pixel without fragments holds clear buffers, :func:`clear_oit_strip`); then
+    those with a fragment blended over ``rgb_row``. In one loop this ran scalar: 14 % of a
+    translucent-three frame."""
+    for col in range(seen_row.shape[0]):
+        j = np.uint64(col)  # unsigned: no wrap-around
         eight[0, j], eight[1, j], eight[2, j], eight[3, j] = oit_colour8(
-            sums[SUM_R, row, j], sums[SUM_G, row, j], sums[SUM_B, row, j], sums[WEIGHT, row, j],
-            sums[TRANSMIT, row, j])
-    for col in range(seen.shape[1]):
-        if seen[row, col] > 0:
-            rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = oit_over(
-                eight[0, col], eight[1, col], eight[2, col], eight[3, col], rgb[row, col, 0], rgb[row, col, 1],
-                rgb[row, col, 2])
+            buffers[j, SUM_R], buffers[j, SUM_G], buffers[j, SUM_B], buffers[j, WEIGHT], buffers[j, TRANSMIT])
+    for col in range(seen_row.shape[0]):
+        if seen_row[col] > 0:
+            rgb_row[col, 0], rgb_row[col, 1], rgb_row[col, 2] = oit_over(
+                eight[0, col], eight[1, col], eight[2, col], eight[3, col], rgb_row[col, 0], rgb_row[col, 1],
+                rgb_row[col, 2])

@@ -44,7 +44,7 @@ from renderer.min_max import larger, smaller
 
 from renderer.bands import first_row_of_band, one_band_at_a_time, raster_bands, shading_bands
 from renderer.fragment_spans import batch_points, light_batch, lit_in_batches, span_linear_colours
-from renderer.oit_buffers import (F32_ONE, add_run_to_oit, clear_oit_rows, mul8, oit_add, oit_resolve,
+from renderer.oit_buffers import (F32_ONE, OIT_VALUES, add_run_to_oit, clear_oit_strip, mul8, oit_add, oit_resolve,
                                   resolve_oit_row)
 from renderer.raster import DEPTH_CLEAR, FILL_RULES, pixel_depth, row_depth, row_span, set_up
 from renderer.reflection.materials import PIXEL_FACE_NORMAL
@@ -240,19 +240,19 @@ def batch_scratch(width):
 
 
 @njit(cache=True, inline="always")
-def emit_run(colour, first, a, row, c0, count, seen, start, colours, sums):
+def emit_run(colour, first, a, row, c0, count, seen, start, colours, strip, lo):
     """A lit run's fragments (pixels ``c0 … c0 + count − 1`` of ``row``, linear colours from
     column ``first`` of ``colour`` (3, N) float32, alpha ``a``) to where
     :func:`shade_fragments` sends them: with ``colours`` (F, 3) not empty, each pixel's next
-    place in its fragment list (``start``, ``seen``); else the ``oit`` buffers ``sums``
-    (:func:`add_run_to_oit`)."""
+    place in its fragment list (``start``, ``seen``); else the ``oit`` buffers ``strip``
+    (rows, W, 5) of the strip whose first row is ``lo`` (:func:`add_run_to_oit`)."""
     if colours.shape[0] > 0:
         for i in range(count):
             j = start[row, c0 + i] + seen[row, c0 + i]
             colours[j, 0], colours[j, 1], colours[j, 2] = colour[0, first + i], colour[1, first + i], colour[2, first + i]
             seen[row, c0 + i] += 1
     else:
-        add_run_to_oit(colour, first, a, row, c0, count, seen, sums)
+        add_run_to_oit(colour, first, a, c0, count, seen[row], strip[row - lo])
 
 
 @njit(cache=True, inline="always")
@@ -295,7 +295,8 @@ class RunTargets(NamedTuple):
     """What :func:`shade_fragments` reads and writes (window rows): ``opaque_depth`` (H, W)
     the opaque z-buffer; ``seen`` (H, W) int32 each pixel's fragments so far; ``start``
     (H, W) int64 and ``colours`` (F, 3) float32 the fragment lists to fill (``colours``
-    empty: none); ``sums`` (5, H, W) float32 the ``oit`` buffers; ``rgb`` (H, W, 3) uint8."""
+    empty: none); ``sums`` (bands, :data:`STRIP_ROWS`, W, 5) float32 the ``oit`` buffers of
+    each band's strip (:mod:`renderer.oit_buffers`); ``rgb`` (H, W, 3) uint8."""
 
     opaque_depth: np.ndarray
     seen: np.ndarray
@@ -320,9 +321,10 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
     - with ``colours`` (F, 3) float32 not empty: fragment ``j`` of pixel (row, col) gets
       its colour at ``start[row, col] + j`` (the lists of :func:`fragment_lists`);
     - else (``oit``): each fragment is added straight to the pixel's ``oit`` buffers
-      ``sums`` (5, H, W) float32 (:func:`oit_add`, in draw order as the lists would give
-      it), and when a band has drawn every triangle its rows are composited over ``rgb``
-      (:func:`oit_resolve`) — no lists, no second pass.
+      ``sums`` (one strip a band, :mod:`renderer.oit_buffers`; :func:`oit_add`, in draw
+      order as the lists would give it), and when a band has drawn every triangle over a
+      strip, its rows are composited over ``rgb`` (:func:`oit_resolve`) — no lists, no
+      second pass.
     """
     opaque_depth, seen, start = into.opaque_depth, into.seen, into.start
     colours, sums, rgb = into.colours, into.sums, into.rgb
@@ -344,7 +346,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                     seen[row, col] = 0
                 nearest[row - lo] = nearest_in_row(opaque_depth, row)
             if not fill:
-                clear_oit_rows(sums, lo, hi)
+                clear_oit_strip(sums[b])
             for k in range(setup.ccw.shape[0]):
                 if setup.rows[k, 0] > hi or setup.rows[k, 1] < lo:  # not on this strip
                     continue
@@ -378,17 +380,17 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                             n_runs, n_points = n_runs + 1, n_points + lanes
                             continue
                         span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, scratch)
-                        emit_run(colour, 0, a, row, c0, col - c0, seen, start, colours, sums)
+                        emit_run(colour, 0, a, row, c0, col - c0, seen, start, colours, sums[b], lo)
                 if n_runs:
                     light_batch(o, materials, lights, run_points, n_points, run_colours)
                     first = 0
                     for r in range(n_runs):
                         row, c0, count = runs[r, 0], runs[r, 1], runs[r, 2]
-                        emit_run(run_colours, first, a, row, c0, count, seen, start, colours, sums)
+                        emit_run(run_colours, first, a, row, c0, count, seen, start, colours, sums[b], lo)
                         first += whole_lanes(count)
             if not fill:
                 for row in range(lo, hi + 1):
-                    resolve_oit_row(sums, seen, row, rgb, eight)
+                    resolve_oit_row(sums[b, row - lo], seen[row], rgb[row], eight)
 
 
 @njit(cache=True, parallel=True)
@@ -493,14 +495,17 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
         with one_band_at_a_time():
             shade_fragments(*shading, RunTargets(opaque_depth, seen, np.empty((1, 1), np.int64),
                                                  np.empty((0, 3), np.float32),
-                                                 empty(ws, "translucency.sums", (5, height, width), np.float32), rgb))
+                                                 empty(ws, "translucency.sums", (strip_bands, STRIP_ROWS, width, OIT_VALUES),
+                                                       np.float32), rgb))
+        import os
+        if os.environ.get("STATS"): print("fragments", int(seen.sum()), "pixels", int((seen > 0).sum()), "tris", len(tri_fixed))
         return seen > 0
     lists = collect_lists(setup, opaque_depth, rule, depth_test, n_bands, ws)
     colours = empty(ws, "translucency.colours", (len(lists.tri), 3), np.float32)
     with one_band_at_a_time():
         if len(colours):
             shade_fragments(*shading, RunTargets(opaque_depth, seen, lists.start, colours,
-                                                 np.empty((0, 0, 5), np.float32), rgb))
+                                                 np.empty((0, 0, 0, OIT_VALUES), np.float32), rgb))
         alphas = inputs.materials.opacity[geo.tri_object[frags.clip_source]]
         composite_lists(lists, colours, alphas, MODES[mode], shading_bands(height), rgb)
     return lists.count > 0

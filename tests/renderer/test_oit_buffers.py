@@ -1,11 +1,10 @@
-"""The ``oit`` buffers: 8-bit blending, half-float sums of a pixel's fragments, a run added in whole lanes."""
+"""The ``oit`` buffers: 8-bit blending, half-float sums of a pixel's fragments, a run of fragments added."""
 import numpy as np
 import pytest
 
 from renderer.jit import njit
-from renderer.oit_buffers import (SUM_B, SUM_G, SUM_R, TRANSMIT, WEIGHT, add_run_to_oit, blend8, clear_oit_rows,
-                                  mul8, oit_add)
-from renderer.spans import LANES
+from renderer.oit_buffers import (OIT_VALUES, SUM_B, SUM_G, SUM_R, TRANSMIT, WEIGHT, add_run_to_oit, blend8,
+                                  clear_oit_strip, mul8, oit_add)
 
 
 def test_mul8_is_the_rounded_product_over_255():
@@ -22,46 +21,44 @@ def test_blend8_saturates_at_255():
 
 
 @njit(cache=False)
-def add_runs(colour, runs, alphas, seen, sums):
+def add_runs(colour, runs, alphas, seen, strip):
     """Each run (row, first pixel, pixels, first colour column) of ``runs`` through add_run_to_oit, in order."""
     for r in range(runs.shape[0]):
-        add_run_to_oit(colour, runs[r, 3], alphas[r], runs[r, 0], runs[r, 1], runs[r, 2], seen, sums)
+        row = runs[r, 0]
+        add_run_to_oit(colour, runs[r, 3], alphas[r], runs[r, 1], runs[r, 2], seen[row], strip[row])
 
 
 @njit(cache=False)
-def cleared(sums, lo, hi):
-    clear_oit_rows(sums, lo, hi)
+def cleared(strip):
+    clear_oit_strip(strip)
 
 
 def one_fragment_at_a_time(colour, runs, alphas, height, width):
     """The buffers as oit_add leaves them, a fragment at a time, each pixel from no fragment."""
-    sums = np.zeros((5, height, width), np.float32)
-    sums[TRANSMIT] = 1.0
+    sums = np.zeros((height, width, OIT_VALUES), np.float32)
+    sums[:, :, TRANSMIT] = 1.0
     seen = np.zeros((height, width), np.int32)
     for (row, c0, count, first), a in zip(runs, alphas):
         for i in range(count):
-            p = (row, c0 + i)
-            new = oit_add(sums[SUM_R][p], sums[SUM_G][p], sums[SUM_B][p], sums[WEIGHT][p], sums[TRANSMIT][p],
+            v = sums[row, c0 + i]
+            new = oit_add(v[SUM_R], v[SUM_G], v[SUM_B], v[WEIGHT], v[TRANSMIT],
                           colour[0, first + i], colour[1, first + i], colour[2, first + i], a)
-            for c, v in enumerate(new):
-                sums[c][p] = v
-            seen[p] += 1
+            v[:] = new
+            seen[row, c0 + i] += 1
     return sums, seen
 
 
-def test_clearing_gives_the_buffers_of_a_pixel_without_fragments():
-    sums = np.full((5, 4, 9), 7.0, np.float32)
-    cleared(sums, 1, 2)
-    assert (sums[:TRANSMIT, 1:3] == 0.0).all() and (sums[TRANSMIT, 1:3] == 1.0).all()
-    assert (sums[:, 0] == 7.0).all() and (sums[:, 3] == 7.0).all()
+def test_clearing_gives_the_buffers_of_pixels_without_fragments():
+    strip = np.full((4, 9, OIT_VALUES), 7.0, np.float32)
+    cleared(strip)
+    assert (strip[:, :, :TRANSMIT] == 0.0).all() and (strip[:, :, TRANSMIT] == 1.0).all()
 
 
-@pytest.mark.parametrize("width", [LANES - 3, 2 * LANES + 5, 61])
-def test_runs_added_in_whole_lanes_give_the_sums_of_one_fragment_at_a_time(width):
+@pytest.mark.parametrize("width", [5, 21, 61])
+def test_runs_give_the_sums_of_one_fragment_at_a_time(width):
     """Runs of every length from 1 to the row's width, overlapping in layers, at the row's start
-    and end (where the lanes would pass it) and at the colour table's end (where they would
-    read past it), with several alphas: the bits of oit_add a fragment at a time, and the
-    pixels past each run (inside its lanes) unchanged."""
+    and end and at the colour table's end, with several alphas: the bits of oit_add a fragment
+    at a time, and the pixels outside every run untouched."""
     rng = np.random.default_rng(width)
     height, runs, alphas, column = 5, [], [], 0
     for count in range(1, width + 1):
@@ -70,10 +67,10 @@ def test_runs_added_in_whole_lanes_give_the_sums_of_one_fragment_at_a_time(width
             alphas.append(np.float32(rng.choice([0.3, 0.5, 0.7, 1.0])))
             column += count
     colour = rng.uniform(0.0, 1.2, (3, column)).astype(np.float32)  # the last run ends at the table's end
-    sums = np.full((5, height, width), np.nan, np.float32)
-    cleared(sums, 0, height - 1)
+    strip = np.full((height, width, OIT_VALUES), np.nan, np.float32)
+    cleared(strip)
     seen = np.zeros((height, width), np.int32)
-    add_runs(colour, np.array(runs, np.int64), np.array(alphas, np.float32), seen, sums)
+    add_runs(colour, np.array(runs, np.int64), np.array(alphas, np.float32), seen, strip)
     expected_sums, expected_seen = one_fragment_at_a_time(colour, runs, alphas, height, width)
     np.testing.assert_array_equal(seen, expected_seen)
-    np.testing.assert_array_equal(sums.view(np.uint32), expected_sums.view(np.uint32))
+    np.testing.assert_array_equal(strip.view(np.uint32), expected_sums.view(np.uint32))
