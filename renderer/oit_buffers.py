@@ -7,7 +7,7 @@ it (:func:`oit_add`); then resolves them over the opaque 8-bit frame: ``C = Σα
 0.01)``, coverage ``A = 1 − Π(1 − α)``, ``A·C + (1 − A)·B`` in an 8-bit blend unit
 (:func:`oit_resolve`, :func:`blend8`). Here the targets are five float32 planes of
 half-float values (:data:`SUM_R` …), a strip of rows at a time: cleared
-(:func:`clear_oit_rows`), a run of fragments added (:func:`add_run_to_oit`), each row resolved
+(:func:`clear_oit_strip`), a run of fragments added (:func:`add_run_to_oit`), each row resolved
 (:func:`resolve_oit_row`).
 """
 from __future__ import annotations
@@ -71,9 +71,10 @@ SUM_R, SUM_G, SUM_B, WEIGHT, TRANSMIT = range(5)
 """The ``oit`` buffers of a pixel as :func:`shade_fragments` keeps them: five float32 values
 holding half floats, side by side (a strip (rows, W, 5) for a strip of rows: the pixels of
 a row one after another, each pixel's five values together), the sums Σαr, Σαg, Σαb, the
-weight Σα and the transmittance Π(1 − α). A strip is cleared to no fragment yet
-(:func:`clear_oit_strip`) before its triangles are drawn, so adding a fragment is the same
-sum for a pixel's first one as for the rest."""
+weight Σα and the transmittance Π(1 − α). A strip holds no fragment yet when its
+triangles are drawn (:func:`clear_oit_strip`, then each resolved row cleared again,
+:func:`resolve_oit_row`), so adding a fragment is the same sum for a pixel's first one as
+for the rest."""
 
 OIT_VALUES = 5
 """Values of a pixel's ``oit`` buffers (:data:`SUM_R` … :data:`TRANSMIT`)."""
@@ -114,19 +115,29 @@ def add_run_to_oit(colour, first, a, c0, count, seen_row, buffers):
 
 
 @njit(cache=True, inline="always")
-def resolve_oit_row(buffers, seen_row, rgb_row, eight):
-    """Every pixel of a row that got a fragment: its ``oit`` buffers (``buffers`` (W, 5), the
-    row's in a strip) over ``rgb_row`` (W, 3) uint8 (as :func:`oit_resolve`). First every
-    pixel's 8-bit colour and coverage (:func:`oit_colour8`) into ``eight`` (4, ≥ W) uint8, no
-    branch (a pixel without fragments holds clear buffers, :func:`clear_oit_strip`); then
-    those with a fragment blended over ``rgb_row``. In one loop this ran scalar: 14 % of a
-    translucent-three frame."""
-    for col in range(seen_row.shape[0]):
+def resolve_oit_row(buffers, seen_row, rgb_row, eight, first, last):
+    """The pixels ``first … last`` of a row that got a fragment: their ``oit`` buffers
+    (``buffers`` (W, 5), the row's in a strip) over ``rgb_row`` (W, 3) uint8 (as
+    :func:`oit_resolve`); then those buffers cleared (:func:`clear_oit_strip`'s values), so
+    the strip is clear for the next one without a pass over all its pixels. ``first …
+    last``: the columns the row's runs touched (none when ``first > last``).
+
+    First every pixel's 8-bit colour and coverage (:func:`oit_colour8`) into ``eight`` (4,
+    ≥ W) uint8, no branch (a pixel without fragments holds clear buffers); then those with
+    a fragment blended over ``rgb_row``. In one loop this ran scalar: 14 % of a
+    translucent-three frame. Over the whole row (not the touched columns), resolving and
+    clearing took 1.7 and 0.4 ms of a 10.5 ms translucent-three frame at 512² (one thread)."""
+    for col in range(first, last + 1):
         j = np.uint64(col)  # unsigned: no wrap-around
         eight[0, j], eight[1, j], eight[2, j], eight[3, j] = oit_colour8(
             buffers[j, SUM_R], buffers[j, SUM_G], buffers[j, SUM_B], buffers[j, WEIGHT], buffers[j, TRANSMIT])
-    for col in range(seen_row.shape[0]):
+    for col in range(first, last + 1):
         if seen_row[col] > 0:
             rgb_row[col, 0], rgb_row[col, 1], rgb_row[col, 2] = oit_over(
                 eight[0, col], eight[1, col], eight[2, col], eight[3, col], rgb_row[col, 0], rgb_row[col, 1],
                 rgb_row[col, 2])
+    for col in range(first, last + 1):
+        j = np.uint64(col)
+        for c in range(TRANSMIT):
+            buffers[j, c] = F32_ZERO
+        buffers[j, TRANSMIT] = F32_ONE

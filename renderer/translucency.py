@@ -240,19 +240,27 @@ def batch_scratch(width):
 
 
 @njit(cache=True, inline="always")
-def emit_run(colour, first, a, row, c0, count, seen, start, colours, strip, lo):
+def emit_run(colour, first, a, row, c0, count, seen, start, colours, buffers):
     """A lit run's fragments (pixels ``c0 … c0 + count − 1`` of ``row``, linear colours from
     column ``first`` of ``colour`` (3, N) float32, alpha ``a``) to where
     :func:`shade_fragments` sends them: with ``colours`` (F, 3) not empty, each pixel's next
-    place in its fragment list (``start``, ``seen``); else the ``oit`` buffers ``strip``
-    (rows, W, 5) of the strip whose first row is ``lo`` (:func:`add_run_to_oit`)."""
+    place in its fragment list (``start``, ``seen``); else the row's ``oit`` buffers
+    ``buffers`` (W, 5) (:func:`add_run_to_oit`)."""
     if colours.shape[0] > 0:
         for i in range(count):
             j = start[row, c0 + i] + seen[row, c0 + i]
             colours[j, 0], colours[j, 1], colours[j, 2] = colour[0, first + i], colour[1, first + i], colour[2, first + i]
             seen[row, c0 + i] += 1
     else:
-        add_run_to_oit(colour, first, a, c0, count, seen[row], strip[row - lo])
+        add_run_to_oit(colour, first, a, c0, count, seen[row], buffers)
+
+
+@njit(cache=True, inline="always")
+def widen(touched, r, c0, count):
+    """Row ``r`` of a strip's ``touched`` (rows, 2) columns, first and last, widened to take
+    in a run of ``count`` pixels from column ``c0``."""
+    touched[r, 0] = smaller(touched[r, 0], c0)
+    touched[r, 1] = larger(touched[r, 1], c0 + count - 1)
 
 
 @njit(cache=True, inline="always")
@@ -296,7 +304,8 @@ class RunTargets(NamedTuple):
     the opaque z-buffer; ``seen`` (H, W) int32 each pixel's fragments so far; ``start``
     (H, W) int64 and ``colours`` (F, 3) float32 the fragment lists to fill (``colours``
     empty: none); ``sums`` (bands, :data:`STRIP_ROWS`, W, 5) float32 the ``oit`` buffers of
-    each band's strip (:mod:`renderer.oit_buffers`); ``rgb`` (H, W, 3) uint8."""
+    each band's strip (:mod:`renderer.oit_buffers`; W is 0 with lists to fill); ``rgb``
+    (H, W, 3) uint8."""
 
     opaque_depth: np.ndarray
     seen: np.ndarray
@@ -339,14 +348,16 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
         run_points, run_colours, runs = batch_scratch(width)  # a triangle's runs on a strip
         eight = np.empty((4, width), np.uint8)  # a row's resolved oit colours (resolve_oit_row)
         nearest = np.empty(STRIP_ROWS, np.int32)  # the nearest opaque depth of each of the strip's rows
+        touched = np.empty((STRIP_ROWS, 2), np.int64)  # the first and last column each row's runs touched
+        if not fill:
+            clear_oit_strip(sums[b])  # then each row clears what it touched when it is resolved
         for strip in range(b, n_strips, n_bands):
             lo, hi = strip * STRIP_ROWS, smaller(strip * STRIP_ROWS + STRIP_ROWS, height) - 1
             for row in range(lo, hi + 1):
                 for col in range(width):
                     seen[row, col] = 0
                 nearest[row - lo] = nearest_in_row(opaque_depth, row)
-            if not fill:
-                clear_oit_strip(sums[b])
+            touched[:, 0], touched[:, 1] = width, -1
             for k in range(setup.ccw.shape[0]):
                 if setup.rows[k, 0] > hi or setup.rows[k, 1] < lo:  # not on this strip
                     continue
@@ -380,17 +391,20 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                             n_runs, n_points = n_runs + 1, n_points + lanes
                             continue
                         span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, scratch)
-                        emit_run(colour, 0, a, row, c0, col - c0, seen, start, colours, sums[b], lo)
+                        emit_run(colour, 0, a, row, c0, col - c0, seen, start, colours, sums[b, row - lo])
+                        widen(touched, row - lo, c0, col - c0)
                 if n_runs:
                     light_batch(o, materials, lights, run_points, n_points, run_colours)
                     first = 0
                     for r in range(n_runs):
                         row, c0, count = runs[r, 0], runs[r, 1], runs[r, 2]
-                        emit_run(run_colours, first, a, row, c0, count, seen, start, colours, sums[b], lo)
+                        emit_run(run_colours, first, a, row, c0, count, seen, start, colours, sums[b, row - lo])
+                        widen(touched, row - lo, c0, count)
                         first += whole_lanes(count)
             if not fill:
                 for row in range(lo, hi + 1):
-                    resolve_oit_row(sums[b, row - lo], seen[row], rgb[row], eight)
+                    resolve_oit_row(sums[b, row - lo], seen[row], rgb[row], eight, touched[row - lo, 0],
+                                    touched[row - lo, 1])
 
 
 @njit(cache=True, parallel=True)
@@ -505,7 +519,8 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
     with one_band_at_a_time():
         if len(colours):
             shade_fragments(*shading, RunTargets(opaque_depth, seen, lists.start, colours,
-                                                 np.empty((0, 0, 0, OIT_VALUES), np.float32), rgb))
+                                                 np.empty((strip_bands, STRIP_ROWS, 0, OIT_VALUES), np.float32),
+                                                 rgb))
         alphas = inputs.materials.opacity[geo.tri_object[frags.clip_source]]
         composite_lists(lists, colours, alphas, MODES[mode], shading_bands(height), rgb)
     return lists.count > 0

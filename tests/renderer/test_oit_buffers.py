@@ -4,7 +4,7 @@ import pytest
 
 from renderer.jit import njit
 from renderer.oit_buffers import (OIT_VALUES, SUM_B, SUM_G, SUM_R, TRANSMIT, WEIGHT, add_run_to_oit, blend8,
-                                  clear_oit_strip, mul8, oit_add)
+                                  clear_oit_strip, mul8, oit_add, oit_resolve, resolve_oit_row)
 
 
 def test_mul8_is_the_rounded_product_over_255():
@@ -74,3 +74,35 @@ def test_runs_give_the_sums_of_one_fragment_at_a_time(width):
     expected_sums, expected_seen = one_fragment_at_a_time(colour, runs, alphas, height, width)
     np.testing.assert_array_equal(seen, expected_seen)
     np.testing.assert_array_equal(strip.view(np.uint32), expected_sums.view(np.uint32))
+
+
+@njit(cache=False)
+def resolved(buffers, seen_row, rgb_row, first, last):
+    resolve_oit_row(buffers, seen_row, rgb_row, np.empty((4, len(seen_row)), np.uint8), first, last)
+
+
+def test_a_row_resolves_its_touched_columns_over_the_frame_and_leaves_them_clear():
+    """Columns 3 … 9 of a row of 12 touched, 5 and 8 of them without a fragment: the pixels
+    with one get oit_resolve's colour over the frame's, the others keep theirs; the touched
+    columns' buffers come back clear, the rest as they were."""
+    rng = np.random.default_rng(3)
+    width, first, last = 12, 3, 9
+    seen = np.zeros(width, np.int32)
+    seen[first:last + 1] = [1, 2, 0, 1, 3, 0, 1]
+    buffers = np.full((width, OIT_VALUES), 5.0, np.float32)
+    buffers[first:last + 1, :TRANSMIT] = rng.uniform(0.0, 1.0, (last - first + 1, TRANSMIT)).astype(np.float32)
+    buffers[first:last + 1, TRANSMIT] = rng.uniform(0.1, 0.9, last - first + 1).astype(np.float32)
+    before = buffers.copy()
+    rgb = rng.integers(0, 256, (width, 3)).astype(np.uint8)
+    frame = rgb.copy()
+    resolved(buffers, seen, rgb, first, last)
+    for col in range(width):
+        if seen[col]:
+            out = np.zeros(3, np.int64)
+            oit_resolve(*before[col], frame[col].astype(np.int64), out)
+            np.testing.assert_array_equal(rgb[col], out)
+        else:
+            np.testing.assert_array_equal(rgb[col], frame[col])
+    assert (buffers[first:last + 1, :TRANSMIT] == 0.0).all() and (buffers[first:last + 1, TRANSMIT] == 1.0).all()
+    np.testing.assert_array_equal(buffers[:first], before[:first])
+    np.testing.assert_array_equal(buffers[last + 1:], before[last + 1:])
