@@ -46,7 +46,8 @@ from renderer.bands import first_row_of_band, one_band_at_a_time, raster_bands, 
 from renderer.fragment_spans import batch_points, light_batch, lit_in_batches, span_linear_colours
 from renderer.oit_buffers import (F32_ONE, OIT_VALUES, add_run_to_oit, clear_oit_strip, mul8, oit_add, oit_resolve,
                                   resolve_oit_row)
-from renderer.raster import DEPTH_CLEAR, FILL_RULES, pixel_depth, row_depth, row_span, set_up
+from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
+from renderer.raster import DEPTH_CLEAR, FILL_RULES, TOP_LEFT, WALK_ROWS, pixel_depth, row_depth, row_span, set_up
 from renderer.reflection.materials import PIXEL_FACE_NORMAL
 from renderer.shading import ShadingInputs, fragments, span_scratch, unorm8, with_span_table
 from renderer.spans import LANES, whole_lanes
@@ -366,8 +367,23 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                 batched = spans and lit_in_batches(o, materials, textures, lights)
                 face = materials.shading_path[o] == PIXEL_FACE_NORMAL
                 n_runs = n_points = 0
-                for row in range(larger(setup.rows[k, 0], lo), smaller(setup.rows[k, 1], hi) + 1):
-                    first, last = row_span(k, row, setup.ccw, width, rule)
+                r0, r1 = larger(setup.rows[k, 0], lo), smaller(setup.rows[k, 1], hi)
+                walking = r1 - r0 >= WALK_ROWS - 1  # the edges walked (no division a row), as the raster's fill_rows
+                f, top_left = setup.ccw[k], rule == TOP_LEFT
+                long_walk = short_walk = (0, 0, 0, 1, 0, 0)
+                split, high_edge = r1 + 1, 0
+                if walking:
+                    long_edge, low_edge, high_edge, split, r0, r1 = split_at_middle(f, r0, r1, top_left)
+                    long_walk = edge_walk(f, long_edge, r0, 1, top_left)
+                    short_walk = edge_walk(f, low_edge if r0 < split else high_edge, r0, 1, top_left)
+                for row in range(r0, r1 + 1):
+                    if not walking:
+                        first, last = row_span(k, row, setup.ccw, width, rule)
+                    else:
+                        if row == split and row > r0:  # the middle corner passed: the high edge from here
+                            short_walk = edge_walk(f, high_edge, row, 1, top_left)
+                        first, last = walked_columns(long_walk, short_walk, top_left, width)
+                        long_walk, short_walk = walk_on(long_walk), walk_on(short_walk)
                     z_row = row_depth(k, row, setup.plane)
                     whole = spans and (not depth_test or span_in_front(k, z_row, first, last, setup.plane,
                                                                        nearest[row - lo]))

@@ -282,3 +282,39 @@ def test_one_thread_and_two_give_the_same_translucent_bytes():
     with one_thread():
         serial = render(s)
     np.testing.assert_array_equal(serial.rgb, reference.rgb)
+
+
+def grid_quads_scene():
+    """Translucent squares and thin tilted quads seen head-on in a parallel view of one world
+    unit a pixel: their edges lie on rows and columns of pixel centres, half-way between them
+    and a quarter off (horizontal edges on a row of centres, where the fill rule decides), and
+    they are 3 to 40 rows tall, so a strip holds stretches of a triangle long enough to walk."""
+    objects = []
+    for i, (x, y, size) in enumerate([(-20.0, -20.0, 12.0), (-4.5, -19.5, 13.0), (10.25, -20.25, 9.0),
+                                      (-19.75, 0.5, 3.0), (-12.0, 2.0, 40.0), (6.0, 4.0, 17.5)]):
+        objects.append(SceneObject(mesh=quad(size), material=Material(color=(0.2 + 0.1 * i, 0.5, 0.9 - 0.1 * i),
+                                                                       opacity=0.5),
+                                   shading="flat", model_to_world=model_matrix(translate=(x, y, 0.1 * i))))
+    for i, angle in enumerate((3.0, 30.0, 60.0, 89.0)):
+        objects.append(SceneObject(mesh=replace(quad(1.0), points=quad(1.0).points * (2.0, 30.0, 1.0)),
+                                   material=Material(color=(0.9, 0.3, 0.2), specular=0.3, opacity=0.6),
+                                   shading="phong", model_to_world=model_matrix(rotate=(0.0, 0.0, angle),
+                                                                                translate=(14.0 - 4 * i, 14.0, 1.0))))
+    return Scene(image=Image(size=(64, 64), background=(0.1, 0.1, 0.15)),
+                 camera=Camera(position=(0.0, 0.0, 10.0), parallel=True, parallel_scale=32.0,
+                               clipping_range=(1.0, 20.0)),
+                 lights=(Light(kind="scene", position=(3.0, 4.0, 5.0)),), objects=tuple(objects),
+                 render=RenderSettings(transparency="oit"))
+
+
+@pytest.mark.parametrize("fill_rule", ["top-left", "bottom-right"])
+def test_walked_edges_give_the_fragments_of_the_divided_spans(fill_rule):
+    """Runs found by walking a triangle's edges down a strip (the fast path) and the plain
+    path's spans, one division an edge a row: the same bytes and coverage, with edges on
+    rows of pixel centres, for both fill rules."""
+    s = grid_quads_scene()
+    fast = render(s, RenderOptions(fill_rule=fill_rule))
+    slow = render(s, RenderOptions(fill_rule=fill_rule, spans=False))
+    assert 0.3 < fast.coverage.mean() < 0.95
+    np.testing.assert_array_equal(fast.rgb, slow.rgb)
+    np.testing.assert_array_equal(fast.coverage, slow.coverage)
