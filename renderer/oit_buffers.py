@@ -5,9 +5,10 @@ of a pixel into 16-bit float render targets — ``Σαr, Σαg, Σαb``, the wei
 transmittance ``Π(1 − α)`` — in draw order, each step rounded to half as the targets store
 it (:func:`oit_add`); then resolves them over the opaque 8-bit frame: ``C = Σαc / max(Σα,
 0.01)``, coverage ``A = 1 − Π(1 − α)``, ``A·C + (1 − A)·B`` in an 8-bit blend unit
-(:func:`oit_resolve`, :func:`blend8`). Here the targets are five float32 planes of
-half-float values (:data:`SUM_R` …), a strip of rows at a time: cleared
-(:func:`clear_oit_strip`), a run of fragments added (:func:`add_run_to_oit`), each row resolved
+(:func:`oit_resolve`, :func:`blend8`). Here the targets are five float32 values of
+half-float value a pixel, side by side (:data:`SUM_R` …), in a buffer of one strip of rows
+a band: cleared once (:func:`clear_oit_strip`), a run of fragments added
+(:func:`add_run_to_oit`), each row resolved and its touched pixels cleared again
 (:func:`resolve_oit_row`).
 """
 from __future__ import annotations

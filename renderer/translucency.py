@@ -527,8 +527,6 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
                                                  np.empty((0, 3), np.float32),
                                                  empty(ws, "translucency.sums", (strip_bands, STRIP_ROWS, width, OIT_VALUES),
                                                        np.float32), rgb))
-        import os
-        if os.environ.get("STATS"): print("fragments", int(seen.sum()), "pixels", int((seen > 0).sum()), "tris", len(tri_fixed))
         return seen > 0
     lists = collect_lists(setup, opaque_depth, rule, depth_test, n_bands, ws)
     colours = empty(ws, "translucency.colours", (len(lists.tri), 3), np.float32)
