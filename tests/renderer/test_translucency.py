@@ -15,6 +15,7 @@ from lab.matrices import model_matrix
 from lab.normals import radial_normals
 from lab.shapes import cube, icosphere, quad
 from renderer import RenderOptions, render
+from renderer.pipeline import render_stages
 from renderer.raster import DEPTH_CLEAR, DEPTH_MAX
 from renderer.spans import whole_lanes
 from renderer.translucency import (DEPTH_PEELING, MODES, OIT, SORTED, STRIP_ROWS, batch_scratch, composite_pixel,
@@ -286,12 +287,13 @@ def test_one_thread_and_two_give_the_same_translucent_bytes():
 
 def grid_quads_scene():
     """Translucent squares and thin tilted quads seen head-on in a parallel view of one world
-    unit a pixel: their edges lie on rows and columns of pixel centres, half-way between them
-    and a quarter off (horizontal edges on a row of centres, where the fill rule decides), and
-    they are 3 to 40 rows tall, so a strip holds stretches of a triangle long enough to walk."""
+    unit a pixel: the squares' edges lie on rows and columns of pixel centres (where the fill
+    rule decides), half-way between them and a quarter off (the test below checks that some
+    horizontal edges lie on a row of centres), and they are 3 to 40 rows tall, so a strip
+    holds stretches of a triangle long enough to walk."""
     objects = []
-    for i, (x, y, size) in enumerate([(-20.0, -20.0, 12.0), (-4.5, -19.5, 13.0), (10.25, -20.25, 9.0),
-                                      (-19.75, 0.5, 3.0), (-12.0, 2.0, 40.0), (6.0, 4.0, 17.5)]):
+    for i, (x, y, size) in enumerate([(-20.0, -19.5, 12.0), (-4.5, -20.0, 13.0), (10.25, -20.25, 9.0),
+                                      (-19.75, 0.5, 3.0), (-12.5, 2.5, 40.0), (6.0, 4.0, 17.5)]):
         objects.append(SceneObject(mesh=quad(size), material=Material(color=(0.2 + 0.1 * i, 0.5, 0.9 - 0.1 * i),
                                                                        opacity=0.5),
                                    shading="flat", model_to_world=model_matrix(translate=(x, y, 0.1 * i))))
@@ -313,6 +315,9 @@ def test_walked_edges_give_the_fragments_of_the_divided_spans(fill_rule):
     path's spans, one division an edge a row: the same bytes and coverage, with edges on
     rows of pixel centres, for both fill rules."""
     s = grid_quads_scene()
+    fixed = render_stages(s)[1].tri_fixed
+    on_centres = [t[e, 1] % SUBPIXEL == 0 for t in fixed for e in range(3) if t[e, 1] == t[(e + 1) % 3, 1]]
+    assert sum(on_centres) >= 4 and not all(on_centres)
     fast = render(s, RenderOptions(fill_rule=fill_rule))
     slow = render(s, RenderOptions(fill_rule=fill_rule, spans=False))
     assert 0.3 < fast.coverage.mean() < 0.95
