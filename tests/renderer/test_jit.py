@@ -295,10 +295,11 @@ def test_a_kernel_numba_cannot_cache_gets_numbas_warning_not_a_crash():
 def test_a_kernel_compiled_without_refcounts_counts_no_references():
     """``njit(refcounts=False)``: the compiled code calls no ``NRT_incref``/``NRT_decref``, where
     the same function with them does; the lighting kernel, called once per span, and the
-    raster's band kernels, which take views of the set-up rows per triangle, are built so."""
+    raster's band kernels, which take views of the set-up rows per triangle, and the set-up's
+    chunk kernel, which writes each triangle's row of planes through a view, are built so."""
     import numpy as np
 
-    from renderer.raster import band_dividing, band_walking
+    from renderer.raster import band_dividing, band_walking, set_up_range
     from renderer.reflection.vtk_spans import vtk_light_kernel
 
     def total(a, b):
@@ -311,7 +312,7 @@ def test_a_kernel_compiled_without_refcounts_counts_no_references():
     assert "NRT_incref" in counted.inspect_llvm(counted.signatures[0])
     assert "NRT_incref" not in uncounted.inspect_llvm(uncounted.signatures[0])
     assert "NRT_decref" not in uncounted.inspect_llvm(uncounted.signatures[0])
-    for kernel in (vtk_light_kernel, band_dividing, band_walking):
+    for kernel in (vtk_light_kernel, band_dividing, band_walking, set_up_range):
         assert kernel.targetoptions.get("_nrt") is False, kernel
 
 
@@ -337,7 +338,7 @@ def test_kernels_are_compiled_without_the_wrappers_they_do_not_need():
     assert "@_ZN7cpython" in ir, "a kernel Python calls has its CPython wrapper"
     with pytest.raises(TypeError, match="called from kernels only"):
         inner(np.ones(1))
-    from renderer.raster import band_dividing, band_walking
+    from renderer.raster import band_dividing, band_walking, set_up_range
     from renderer.reflection.vtk_spans import vtk_light_kernel
     for kernel in (band_dividing, band_walking, vtk_light_kernel):
         assert kernel.targetoptions.get("no_cpython_wrapper") is True
