@@ -338,7 +338,7 @@ def test_kernels_are_compiled_without_the_wrappers_they_do_not_need():
     assert "@_ZN7cpython" in ir, "a kernel Python calls has its CPython wrapper"
     with pytest.raises(TypeError, match="called from kernels only"):
         inner(np.ones(1))
-    from renderer.raster import band_dividing, band_walking, set_up_range
+    from renderer.raster import band_dividing, band_walking
     from renderer.reflection.vtk_spans import vtk_light_kernel
     for kernel in (band_dividing, band_walking, vtk_light_kernel):
         assert kernel.targetoptions.get("no_cpython_wrapper") is True
