@@ -240,6 +240,12 @@ def cmd_bench(args) -> int:
     return run_bench(args)
 
 
+def cmd_bench_revisions(args) -> int:
+    from lab.app.bench_revisions import run_bench_revisions
+
+    return run_bench_revisions(args)
+
+
 def cmd_demo(args) -> int:
     from lab.app.demo import run_demo
 
@@ -402,6 +408,24 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also time our frames with 1 and 2 threads while another process keeps one core busy")
     p.add_argument("--list", action="store_true", help="list the benchmark set and exit")
     p.set_defaults(func=cmd_bench)
+
+    p = sub.add_parser("bench-revisions", help="our frame time at this tree against another git revision, "
+                                               "across processes",
+                       description="Times our renderer at this tree and at REV (exported once into "
+                                   "~/.cache/scanlab/revisions), each child process loading one tree only, the two "
+                                   "taking turns in rounds; prints the median of the rounds' ratios this tree / REV "
+                                   "(< 1: this tree is quicker) and whether the images are the same bytes. Two "
+                                   "versions of the kernels in one process are not timed alike (docs/performance.md).")
+    p.add_argument("rev", metavar="REV", help="a git revision of this repository (a commit, branch or tag)")
+    p.add_argument("scenes", nargs="+", metavar="SCENE", help="names of the benchmark set (scanlab bench --list), "
+                                                             "presets or shapes")
+    p.add_argument("--size", type=image_size, action="append", metavar="WxH",
+                   help="image size (repeatable; default 512x512)")
+    p.add_argument("--rounds", type=whole(1), default=10, help="rounds of one process a side (default 10)")
+    p.add_argument("--frames", type=whole(1), default=15, help="timed frames in each process (default 15)")
+    p.add_argument("--threads", type=whole(1), help="numba threads in each process (default: numba's)")
+    p.add_argument("--json", metavar="FILE", help="also write every figure to FILE as JSON")
+    p.set_defaults(func=cmd_bench_revisions)
 
     p = sub.add_parser("export", help="write the exact triangles both renderers draw (.ply .obj .stl .vtp), "
                                       "or the whole scene as a scene file (.toml)",
