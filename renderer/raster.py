@@ -179,11 +179,10 @@ def set_up_range(chunk, corners, fixed, window, height, cull_back, front, ccw, r
     array read a test for a negative value: measured 4 % slower). Returns the rows they span.
 
     Without reference counts (``refcounts=False``; it makes no array): each triangle's row of
-    ``plane`` is a view, and counting it cost an atomic increment and decrement a triangle.
-    Whole frames, this kernel without and with counts alternating in one process (25 pairs,
-    the same bytes), without/with: one thread at 512², ico7-phong 0.92, igea-270k 0.90,
-    menger4 0.94, ico5-phong 0.97; two threads, ico7-phong 512² 0.96, igea-1m 512² 0.89,
-    menger4 1024² 0.93, igea-270k 1024² 0.92."""
+    ``plane`` is a view, which would be counted with an atomic increment and decrement a
+    triangle. Whole frames with and without the counts, timed across processes, differ by
+    no more than the noise (igea-1m 512² 0.98, igea-270k 1024² 1.00, ico7-phong 512² 1.00,
+    docs/performance.md, "Two copies of a kernel in one process")."""
     first = chunk * SETUP_CHUNK
     spanned = 0
     for k in range(first, smaller(first + SETUP_CHUNK, np.uint64(corners.source.shape[0]))):
