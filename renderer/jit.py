@@ -105,10 +105,17 @@ def _writable(folder: Path) -> bool:
         return False
 
 
+def user_cache_home() -> Path:
+    """scanlab's folder in the user's cache: ``$XDG_CACHE_HOME/scanlab``, by default
+    ``~/.cache/scanlab`` (kernels here, :func:`user_cache_root`; exported revisions,
+    :mod:`lab.app.bench_revisions`)."""
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "scanlab"
+
+
 def user_cache_root() -> Path:
     """``$XDG_CACHE_HOME/scanlab/kernels``, by default ``~/.cache/scanlab/kernels``."""
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return Path(base) / "scanlab" / "kernels"
+    return user_cache_home() / "kernels"
 
 
 def cache_root(source_dir: Path = SOURCE_DIR) -> Path:

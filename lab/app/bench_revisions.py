@@ -26,6 +26,7 @@ from pathlib import Path
 
 import lab.atomic
 from compare.bench_scenes import BENCH_SCENES, bench_scene
+from renderer.jit import user_cache_home
 
 TREE = Path(__file__).resolve().parents[2]
 """The root of the tree this module belongs to (holds ``renderer/``, ``compare/``, ``lab/``)."""
@@ -57,9 +58,9 @@ class RevisionError(RuntimeError):
 
 
 def cache_folder() -> Path:
-    """Where exported revisions live: ``$XDG_CACHE_HOME/scanlab/revisions`` (``~/.cache`` when unset)."""
-    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
-    return Path(base) / "scanlab" / "revisions"
+    """Where exported revisions live: ``$XDG_CACHE_HOME/scanlab/revisions`` (``~/.cache`` when
+    unset), beside the kernels' folder (:func:`renderer.jit.user_cache_home`)."""
+    return user_cache_home() / "revisions"
 
 
 def commit_of(rev: str, repo: Path = TREE) -> str:

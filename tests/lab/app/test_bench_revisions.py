@@ -92,3 +92,11 @@ def test_the_trees_take_turns_and_differing_images_are_said(monkeypatch):
     assert calls == ["ours-tree", "theirs-tree", "theirs-tree", "ours-tree", "ours-tree", "theirs-tree"]
     assert row["ratio"] == 0.5 and row["size"] == "64x64" and row["same_image"] is False
     assert "images differ" in br.report_line(row)
+
+
+def test_revisions_live_beside_the_kernels_in_the_users_cache(monkeypatch, tmp_path):
+    from renderer.jit import user_cache_root
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    assert br.cache_folder() == tmp_path / "scanlab" / "revisions"
+    assert br.cache_folder().parent == user_cache_root().parent
