@@ -632,10 +632,11 @@ def test_the_mean_rows_of_a_batch_are_the_exact_mean_its_set_up_summed_chunk_by_
     assert mean_rows(set_up(fixed[:0], window[:0], height, cull_back)) == 0.0
 
 
-def test_a_triangle_between_two_rows_of_pixel_centres_is_set_up_only_as_far_as_it_is_read():
-    """A triangle that covers no row of pixel centres gets its facing, rows (none) and weights'
-    plane (translucent spans read it), not its counter-clockwise corners or depth plane,
-    which only drawing reads; every other triangle gets all of them, as set up one by one."""
+def test_a_triangle_whose_box_holds_no_pixel_centre_is_set_up_only_as_far_as_it_is_read():
+    """A triangle whose box holds no pixel centre — it lies between two rows of centres, or
+    between two columns — gets its facing, rows (none) and weights' plane (translucent spans
+    read it), not its counter-clockwise corners or depth plane, which only drawing reads;
+    every other triangle with an area gets all of them, as set up one by one."""
     from renderer.raster import depth_plane, set_up, weights_plane
     rng = np.random.default_rng(21)
     corner = rng.integers(0, 30 * SUBPIXEL, (600, 1, 2))
@@ -643,7 +644,12 @@ def test_a_triangle_between_two_rows_of_pixel_centres_is_set_up_only_as_far_as_i
     window = np.concatenate([fixed / SUBPIXEL + 0.5, rng.uniform(0, 1, (600, 3, 1))], axis=2)
     setup = set_up(fixed, window, 30, False)
     has_rows = setup.rows[:, 0] <= setup.rows[:, 1]
-    assert 50 < has_rows.sum() < 550
+    a_row = np.maximum(-(-fixed[:, :, 1].min(1) // SUBPIXEL), 0) <= np.minimum(fixed[:, :, 1].max(1) // SUBPIXEL, 29)
+    a_column = -(-fixed[:, :, 0].min(1) // SUBPIXEL) <= fixed[:, :, 0].max(1) // SUBPIXEL
+    (x0, y0), (x1, y1), (x2, y2) = fixed.transpose(1, 2, 0)
+    area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+    np.testing.assert_array_equal(has_rows, a_row & a_column & (area != 0))
+    assert 50 < has_rows.sum() < 550 and (a_row & ~a_column).sum() > 50
     flat_window = window.reshape(-1, 3)
     for k in range(len(fixed)):
         plane = np.zeros(11)
@@ -655,3 +661,68 @@ def test_a_triangle_between_two_rows_of_pixel_centres_is_set_up_only_as_far_as_i
             (x0, y0), (x1, y1), (x2, y2) = fixed[k]
             clockwise = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0) < 0
             assert (setup.ccw[k] == (fixed[k, [0, 2, 1]] if clockwise else fixed[k])).all(), k
+
+
+def _sub_pixel_soup(rng, n, size):
+    """``n`` triangles smaller than a pixel, about a pixel centre of a ``size`` × ``size``
+    image; a third with a corner on a centre's row or column, so that centres fall on edges."""
+    corner = rng.integers(0, size * SUBPIXEL, (n, 1, 2))
+    fixed = corner + rng.integers(-SUBPIXEL // 2, SUBPIXEL // 2, (n, 3, 2))
+    fixed[::3, 0] = (fixed[::3, 0] // SUBPIXEL) * SUBPIXEL
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, rng.uniform(0, 1, (n, 3, 1))], axis=2)
+    return fixed.astype(np.int64), window
+
+
+def test_a_lone_pixel_centre_outside_the_triangle_drops_it_at_set_up():
+    """With the lone-centre test, a triangle whose box holds one pixel centre (right of the
+    image's left end, on one of its rows; the triangle with an area) gets no rows when
+    the slow reference (edge functions, top-left rule) says it covers none, except when the
+    centre lies on one of its edges (the fill rule decides it there, when drawn); a triangle
+    that covers its centre keeps its row. Without the test every such triangle keeps it."""
+    from renderer.raster import set_up
+    fixed, window = _sub_pixel_soup(np.random.default_rng(5), 3000, 20)
+    tested, plain = set_up(fixed, window, 20, False, lone_test=True), set_up(fixed, window, 20, False)
+    columns = fixed[:, :, 0].max(1) // SUBPIXEL - (-(-fixed[:, :, 0].min(1) // SUBPIXEL)) + 1
+    rows = fixed[:, :, 1].max(1) // SUBPIXEL - (-(-fixed[:, :, 1].min(1) // SUBPIXEL)) + 1
+    (x0, y0), (x1, y1), (x2, y2) = fixed.transpose(1, 2, 0)
+    area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+    col, row = (-(-fixed.min(1) // SUBPIXEL)).T  # the box's first centre
+    lone = (columns == 1) & (rows == 1) & (area != 0) & (row >= 0) & (row < 20) & (col >= 0)
+    kept, on_edge = tested.rows[:, 0] <= tested.rows[:, 1], np.zeros(len(fixed), bool)
+    covers = np.array([reference_coverage(f, 22, 20).any() for f in fixed])  # the set-up knows no width
+    for k in np.flatnonzero(lone):
+        on_edge[k] = _count_centres_on_edges(fixed[k], 22, 20) > 0
+    assert (plain.rows[lone, 0] <= plain.rows[lone, 1]).all()
+    np.testing.assert_array_equal(kept[lone], covers[lone] | on_edge[lone])
+    np.testing.assert_array_equal(kept[~lone], plain.rows[~lone, 0] <= plain.rows[~lone, 1])
+    assert (lone & ~kept).sum() > 300 and (lone & covers).sum() > 200 and (lone & on_edge & ~covers).sum() > 5
+
+
+@pytest.mark.parametrize("fill_rule", ["top-left", "bottom-right"])
+@pytest.mark.parametrize("cull_back", [False, True])
+def test_batches_after_a_batch_finer_than_the_pixels_test_lone_centres_and_draw_the_same(fill_rule, cull_back):
+    """A batch's set-up tests its triangles' lone pixel centres when the batch before it
+    spanned fewer than LONE_ROWS rows a triangle; the first batch never does. Whatever it
+    drops, the buffers are those of one pass over every triangle (both fill rules, with and
+    without back-face culling)."""
+    from unittest import mock
+
+    import renderer.raster as raster
+    fixed, window = _sub_pixel_soup(np.random.default_rng(8), 4000, 24)
+    tests = []
+
+    def set_up_corners(*args, lone_test=False, **kwargs):
+        tests.append(lone_test)
+        return set_up_plain(*args, lone_test=lone_test, **kwargs)
+
+    set_up_plain = raster.set_up_corners
+    one_pass = raster.rasterize_visibility(raster.whole_triangles(fixed, window), 24, 24, fill_rule, cull_back=cull_back,
+                                           batch=None)
+    with mock.patch.object(raster, "set_up_corners", set_up_corners):
+        batches = raster.rasterize_visibility(raster.whole_triangles(fixed, window), 24, 24, fill_rule,
+                                              cull_back=cull_back, batch=1000)
+    assert tests == [False, True, True, True]
+    assert raster.mean_rows(raster.set_up(fixed, window, 24, cull_back)) < raster.LONE_ROWS
+    assert (one_pass.tri_index >= 0).sum() > 100
+    np.testing.assert_array_equal(batches.tri_index, one_pass.tri_index)
+    np.testing.assert_array_equal(batches.depth, one_pass.depth)
