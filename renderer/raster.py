@@ -53,6 +53,7 @@ from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibilit
 from renderer.edge_functions import fill_narrow_rows, lanes_start
 from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
 from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, fragment_depth_floor, hidden_in_tiles, new_tiles
+from renderer.pixel_centres import LONE_ROWS, ceil_div, centre_rows
 from renderer.window import SUBPIXEL, signed_area_corners, window_edges
 from renderer.workspace import empty
 
@@ -68,8 +69,8 @@ class TriangleSetup(NamedTuple):
     pixel centres it may cover (none when first > last); plane (K, 11): x0, y0, e1x, e1y,
     e2x, e2y — vertex 0 and the edges to vertices 1 and 2 in float window coordinates, in
     the triangle's own vertex order (for the weights) — then the depth plane ax, ay, az,
-    zx, zy (:func:`depth_plane`). A triangle between two rows of pixel centres (a quarter of
-    a 270k-triangle scan's at 512²) gets no ``ccw`` or depth plane: nothing reads them.
+    zx, zy (:func:`depth_plane`). A triangle that draws nothing (no area, culled, or no pixel
+    centre it can cover: :mod:`renderer.pixel_centres`) gets no rows, ``ccw`` or depth plane.
     row_sums (C,) int64: for each chunk of :data:`SETUP_CHUNK` triangles the rows they span
     together (for :func:`mean_rows`).
     """
@@ -79,12 +80,6 @@ class TriangleSetup(NamedTuple):
     rows: np.ndarray
     plane: np.ndarray
     row_sums: np.ndarray
-
-
-@njit(cache=True, inline="always")
-def ceil_div(a, b):
-    """⌈a / b⌉ for integers, b > 0."""
-    return -((-a) // b)
 
 
 @njit(cache=True, inline="always")
@@ -152,52 +147,13 @@ def weights_plane(window, i0, i1, i2, plane):
     plane[0], plane[1], plane[2], plane[3], plane[4], plane[5] = window_edges(window, i0, i1, i2)
 
 
-@njit(cache=True, inline="always")
-def centre_rows(fixed, i0, i1, i2, area, height, lone_test):
-    """The first and last window row of pixel centres the triangle with corners ``i0, i1, i2``
-    (rows of the fixed-point table (M, 2); ``area`` its :func:`renderer.window.signed_area_corners`)
-    may cover, clamped to the image's ``height``; none, (1, 0), when it surely covers none:
-
-    - its box holds no centre: no row of centres between its lowest and highest corner, or
-      no *column* of them between its leftmost and rightmost;
-    - with ``lone_test``, its box holds one centre, and that centre lies strictly outside
-      one of its edges (:func:`outside_an_edge`; a centre on an edge is left to the fill rule).
-
-    A 1M-triangle scan at 512²: 62 % of its triangles have no row or no column of centres
-    (38 % by rows alone), and 32 % hold one centre."""
-    x_min = smaller(smaller(fixed[i0, 0], fixed[i1, 0]), fixed[i2, 0])
-    x_max = larger(larger(fixed[i0, 0], fixed[i1, 0]), fixed[i2, 0])
-    y_min = smaller(smaller(fixed[i0, 1], fixed[i1, 1]), fixed[i2, 1])
-    y_max = larger(larger(fixed[i0, 1], fixed[i1, 1]), fixed[i2, 1])
-    col, last_col = ceil_div(x_min, SUBPIXEL), x_max // SUBPIXEL
-    row, last_row = ceil_div(y_min, SUBPIXEL), y_max // SUBPIXEL
-    if col > last_col or (col == last_col and row == last_row and lone_test
-                          and outside_an_edge(fixed, i0, i1, i2, area, col * SUBPIXEL, row * SUBPIXEL)):
-        return 1, 0
-    return larger(0, row), smaller(height - 1, last_row)
-
-
-@njit(cache=True, inline="always")
-def outside_an_edge(fixed, i0, i1, i2, area, x, y):
-    """Whether the fixed-point point (x, y) lies strictly outside an edge of the triangle with
-    corners ``i0, i1, i2`` (rows of ``fixed`` (M, 2)) and signed area ``area``: an edge
-    function of :func:`scanline_span`'s (``E = dx·(Y − ya) − dy·(X − xa)`` along corner
-    order) of the wrong sign, ``E·area < 0``. No fill rule passes such a point (one on an
-    edge, E = 0, is not outside: the rule decides it when the triangle is drawn)."""
-    for a, b in ((i0, i1), (i1, i2), (i2, i0)):
-        e = (fixed[b, 0] - fixed[a, 0]) * (y - fixed[a, 1]) - (fixed[b, 1] - fixed[a, 1]) * (x - fixed[a, 0])
-        if (e < 0 < area) or (e > 0 > area):
-            return True
-    return False
-
-
 SETUP_CHUNK = np.uint64(1024)
 """Triangles a parallel iteration of :func:`setup_triangles` sets up (:func:`set_up_range`)."""
 
 
 DROP_BACK_FACES, DROP_MISSED_CENTRES = 1, 2
 """Bits of the set-up's ``drops`` (:func:`setup_triangles`): back-face culling (a clockwise
-triangle gets no rows), and the test of a box's lone pixel centre (:func:`centre_rows`)."""
+triangle gets no rows), and the test of a box's lone pixel centre (:func:`renderer.pixel_centres.centre_rows`)."""
 
 
 @njit(cache=True, parallel=True)
@@ -208,7 +164,7 @@ def setup_triangles(corners, fixed, window, height, drops, front, ccw, rows, pla
     :class:`~renderer.clip.CornerIndex`) of the vertex tables ``fixed`` (M, 2) int64 and
     ``window`` (M, 3). ``drops`` (bits): with :data:`DROP_BACK_FACES` a back-facing
     (clockwise) triangle gets no rows, back-face culling; with :data:`DROP_MISSED_CENTRES`
-    neither does one whose box's lone pixel centre lies outside it (:func:`centre_rows`).
+    neither does one whose box's lone pixel centre lies outside it (:func:`renderer.pixel_centres.centre_rows`).
     :data:`SETUP_CHUNK` triangles to a parallel iteration, each chunk one
     call of :func:`set_up_range`: numba's parallel passes then type a one-line loop body
     again, not the whole set-up (a cold start's compile 0.25 s less, the same frames)."""
@@ -425,7 +381,7 @@ def draw_band(b, setup, n_bands, block_rows, rule, depth_test, first_index, buff
             if backs_last and setup.front[k] == (backs == 1):
                 continue
             lo, hi = setup.rows[k, 0], setup.rows[k, 1]
-            if lo > hi:  # no row of pixel centres (:func:`centre_rows`), or nothing to draw
+            if lo > hi:  # no row of pixel centres (:func:`renderer.pixel_centres.centre_rows`), or nothing to draw
                 continue
             block = first_block_of_band(lo, b, n_bands, block_rows)
             floor = -1  # worked out at the first block this band draws: most triangles have none here
@@ -466,16 +422,6 @@ def band_walking(b, setup, n_bands, rule, depth_test, first_index, ends, depth, 
         clear_band(b, n_bands, WALK_BLOCK_ROWS, depth, tri_index)
     draw_band(b, setup, n_bands, WALK_BLOCK_ROWS, rule, depth_test, first_index, (depth, tri_index), fill_rows, tiles)
 
-
-LONE_ROWS = 0.6
-"""The batch's set-up tests the lone pixel centre of a triangle's box (:data:`DROP_MISSED_CENTRES`)
-when the batch before it spanned fewer rows a triangle than this on average: a mesh finer
-than the pixels, whose triangles mostly hold no centre, the rest one, and most of those
-miss it. Measured, the set-up and the raster of whole frames, the test on and off
-alternating in one process (ratios on/off, the same buffers): a 1M-triangle scan at 512²
-(0.11–0.38 rows a triangle; drawable triangles 342k → 121k) 0.80; but the 270k one at 512²
-(0.75–1.06 rows; 208k → 154k) 1.05–1.10 and the 1M one at 1024² 1.02–1.05, where the
-test cost the set-up more than it saved the raster."""
 
 FIRST_BATCH, LAST_BATCH = 1, 2
 """Bits of :func:`rasterize`'s ``ends``: the batch of triangles is the first (each band clears
