@@ -19,7 +19,8 @@ import numpy as np
 from renderer.jit import njit
 from renderer.min_max import larger, smaller
 
-from renderer.raster import FILL_RULES, ceil_div, scanline_span
+from renderer.pixel_centres import ceil_div
+from renderer.raster import FILL_RULES, scanline_span
 from renderer.window import SUBPIXEL, signed_area_fixed
 
 

@@ -36,8 +36,8 @@ def centre_rows(fixed, i0, i1, i2, area, height, lone_test):
     - with ``lone_test``, its box holds one centre, and that centre lies strictly outside
       one of its edges (:func:`outside_an_edge`; a centre on an edge is left to the fill rule).
 
-    A 1M-triangle scan at 512²: 62 % of its triangles have no row or no column of centres
-    (38 % by rows alone), and 32 % hold one centre."""
+    A 1M-triangle scan at 512²: 68 % of its triangles have no row or no column of centres
+    (42 % have no row), and 32 % hold one centre."""
     x_min = smaller(smaller(fixed[i0, 0], fixed[i1, 0]), fixed[i2, 0])
     x_max = larger(larger(fixed[i0, 0], fixed[i1, 0]), fixed[i2, 0])
     y_min = smaller(smaller(fixed[i0, 1], fixed[i1, 1]), fixed[i2, 1])

@@ -385,7 +385,7 @@ def draw_band(b, setup, n_bands, block_rows, rule, depth_test, first_index, buff
                 continue
             block = first_block_of_band(lo, b, n_bands, block_rows)
             floor = -1  # worked out at the first block this band draws: most triangles have none here
-            while block * block_rows <= hi:  # none when lo > hi (nothing to draw)
+            while block * block_rows <= hi:
                 top, bottom = larger(lo, block * block_rows), smaller(hi, block * block_rows + block_rows - 1)
                 if backs and floor < 0:
                     floor = fragment_depth_floor(setup.ccw[k], setup.plane[k])
@@ -560,7 +560,7 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     bands, rule, count = raster_bands(height, n_bands), FILL_RULES[fill_rule], triangles.count
     tiles = new_tiles(height, width, ws) if backs_last and depth_test else NO_TILES
     step = max(count, 1) if batch is None else int(batch)
-    span = TALL_ROWS  # the mean rows of the batch before: none before the first
+    span = float("inf")  # the mean rows of the batch before: no batch, no lone-centre test
     for a in range(0, max(count, 1), step):
         corners = triangles.corners.batch(a, min(a + step, count))
         setup = set_up_corners(corners, triangles.fixed, triangles.window, height, cull_back, ws, "raster",
