@@ -48,8 +48,8 @@ from renderer.min_max import clamp, larger, smaller
 
 from renderer.clip import CornerIndex, corner_row
 from renderer.bands import BLOCK_ROWS, first_block_of_band, one_band_at_a_time, raster_bands
-from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibility, clear_band, depth_bits,
-                                        depth_to_window, fill_columns, finish_band)
+from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibility, clear_band, clear_visibility,
+                                        depth_bits, depth_to_window, fill_columns, finish_band)
 from renderer.edge_functions import fill_narrow_rows, lanes_start
 from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
 from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, fragment_depth_floor, hidden_in_tiles, new_tiles
@@ -554,14 +554,17 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     faces, skipping those a tile z-buffer shows hidden (:mod:`renderer.hidden_back_faces`),
     in each batch whose triangles span :data:`~renderer.hidden_back_faces.BACKS_LAST_ROWS`
     rows or more on average: the same buffer, quicker for closed surfaces seen from outside.
+    No triangles (a scene with nothing opaque): the clear buffer, :func:`clear_visibility`.
     """
-    depth, covered = np.empty((height, width), np.int32), np.empty((height, width), np.bool_)  # the frame's
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)
+    if triangles.count == 0:
+        return clear_visibility(tri_index)
+    depth, covered = np.empty((height, width), np.int32), np.empty((height, width), np.bool_)  # the frame's
     bands, rule, count = raster_bands(height, n_bands), FILL_RULES[fill_rule], triangles.count
     tiles = new_tiles(height, width, ws) if backs_last and depth_test else NO_TILES
-    step = max(count, 1) if batch is None else int(batch)
+    step = count if batch is None else int(batch)
     span = float("inf")  # the mean rows of the batch before: no batch, no lone-centre test
-    for a in range(0, max(count, 1), step):
+    for a in range(0, count, step):
         corners = triangles.corners.batch(a, min(a + step, count))
         setup = set_up_corners(corners, triangles.fixed, triangles.window, height, cull_back, ws, "raster",
                                lone_test=span < LONE_ROWS)

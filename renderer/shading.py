@@ -540,12 +540,26 @@ def fragment_reads(inputs: ShadingInputs, spans: bool = True) -> str:
     return SPAN_TABLE if spans and spans_cover_all(inputs.materials, inputs.textures, inputs.lights) else EVERYTHING
 
 
+def paint_background(background: np.ndarray, rgb: np.ndarray) -> None:
+    """Every pixel of ``rgb`` (H, W, 3) uint8 the 8-bit ``background`` (3,): the shading of a
+    frame without triangles, the bytes the kernels give its empty pixels. One row is filled,
+    then copied to every row (numpy broadcasting the three values over each pixel took
+    1.5 ms at 512², the row 18 µs; the shading kernel's 64 bands, 0.4 ms)."""
+    row = np.empty(rgb.shape[1:], np.uint8)
+    row[:] = background
+    rgb[:] = row
+
+
 def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, rgb: np.ndarray,
           n_bands: int | None = None, spans: bool = True) -> None:
     """Shade the visibility buffer ``frags`` into ``rgb`` (H, W, 3) uint8, window rows (the
     Python wrapper). ``background`` is the 8-bit clear colour; ``n_bands`` defaults to
     :func:`renderer.bands.shading_bands`; ``spans=False`` shades pixel by pixel (the plain
-    path, for tests)."""
+    path, for tests); a frame without triangles is painted with the background
+    (:func:`paint_background`)."""
+    if len(frags.clip_source) == 0:  # no triangle (nothing opaque): the background everywhere, no threads started
+        paint_background(background, rgb)
+        return
     height = frags.tri_index.shape[0]
     n_bands = shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height))
     reads = fragment_reads(inputs, spans)

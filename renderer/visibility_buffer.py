@@ -142,3 +142,13 @@ class Visibility(NamedTuple):
 def depth_to_window(depth: np.ndarray) -> np.ndarray:
     """24-bit integer depths → window depth 0..1 as float64 (``q / (2²⁴ − 1)``, 1.0 where empty)."""
     return depth / DEPTH_MAX
+
+
+def clear_visibility(tri_index: np.ndarray) -> Visibility:
+    """The visibility buffer of a frame without triangles (nothing opaque in the scene): depth
+    :data:`DEPTH_CLEAR`, triangle :data:`EMPTY` (written into ``tri_index`` (H, W) int32, the
+    workspace's) and nothing covered. The buffers the raster's kernels leave when they draw
+    no triangle, filled by numpy without setting up an empty batch and starting the
+    threads (a frame of translucent objects only: 0.2 ms of the raster and its glue)."""
+    tri_index.fill(EMPTY)
+    return Visibility(np.full(tri_index.shape, DEPTH_CLEAR, np.int32), tri_index, np.zeros(tri_index.shape, np.bool_))

@@ -630,3 +630,19 @@ def test_the_mean_rows_of_a_batch_are_the_exact_mean_its_set_up_summed_chunk_by_
     assert mean_rows(setup) == pytest.approx(spans.mean(), rel=1e-12) and spans[:50].sum() == 0
     assert (setup.rows[:, 1] <= height - 1).all() and spans.max() > 10
     assert mean_rows(set_up(fixed[:0], window[:0], height, cull_back)) == 0.0
+
+
+@pytest.mark.parametrize("depth_test", [True, False])
+def test_no_triangles_leave_the_buffer_a_culled_triangle_leaves(depth_test):
+    """A frame with nothing to draw (a scene of translucent objects only) gets the clear buffer
+    without running the kernels: the same depth, triangles and coverage as the kernels leave
+    when their only triangle is a culled back face."""
+    from renderer.raster import rasterize_visibility, whole_triangles
+
+    fixed, window = triangles([(1, 1), (1, 5), (5, 1)])  # clockwise: a back face
+    culled = rasterize_visibility(whole_triangles(fixed, window), 9, 7, depth_test=depth_test, cull_back=True)
+    nothing = rasterize_visibility(whole_triangles(fixed[:0], window[:0]), 9, 7, depth_test=depth_test)
+    np.testing.assert_array_equal(nothing.depth, culled.depth)
+    np.testing.assert_array_equal(nothing.tri_index, culled.tri_index)
+    np.testing.assert_array_equal(nothing.covered, culled.covered)
+    assert not culled.covered.any() and nothing.depth.dtype == culled.depth.dtype

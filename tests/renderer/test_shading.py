@@ -263,3 +263,18 @@ def test_each_frame_reaches_only_the_kernel_its_objects_need(monkeypatch):
     for scene, expected in zip(scenes, plain):
         np.testing.assert_array_equal(render(scene).rgb, expected)
     assert calls == ["paint_rows", "shade_rows_lit_spans", "shade_rows"]
+
+
+def test_a_frame_without_triangles_is_the_background_the_kernels_paint():
+    """With no triangle at all, :func:`shade` paints every pixel the background without a
+    kernel (:func:`paint_background`): the bytes the kernels give a frame whose pixels are
+    all empty."""
+    geo = triangle([[0, 0, -2], [1, 0, -2], [0, 1, -2]])
+    frags = fragments(geo, np.zeros((6, 5, 2)))
+    empty_rows = frags._replace(tri_index=np.full((6, 5), -1, np.int32))  # one triangle, on no pixel
+    none = make_fragments(np.full((6, 5), -1, np.int32), frags.plane[:0], frags.front[:0], frags.tri_clip[:0],
+                          frags.clip_bary[:0], frags.clip_source[:0], False)
+    mats = materials(0.4, 0.6, 0, 1, path=PIXEL_FACE_NORMAL)
+    by_kernel, painted = shade_all(empty_rows, geo, mats), shade_all(none, geo, mats)
+    np.testing.assert_array_equal(painted, by_kernel)
+    assert (painted == BACKGROUND).all()
