@@ -288,3 +288,19 @@ def test_a_split_in_four_shares_each_edge_midpoint_and_keeps_the_winding():
     normal_z = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])[:, 2]
     assert (normal_z > 0).all()  # every child wound as its counter-clockwise parent
     assert {tuple(m) for m in mid.tolist()} == {(0.5, 0, 0), (1, 0.5, 0), (0.5, 0.5, 0), (0.5, 1, 0), (0, 0.5, 0)}
+
+
+def test_a_split_in_four_keeps_each_triangles_children_together_in_its_order():
+    """Parent i's four children are rows 4i … 4i + 3: each has a corner or the centre of its
+    parent, and the list of children keeps the parents' order (neighbours stay neighbours)."""
+    from lab.shapes import split_in_four
+
+    points = np.array([[0.0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [2, 0, 0]])
+    parents = np.array([[0, 1, 2], [0, 2, 3], [1, 4, 2]])
+    mid, tris = split_in_four(points, parents)
+    all_points = np.concatenate([points, mid])
+    centres = all_points[tris].mean(axis=1)
+    for i, parent in enumerate(parents):
+        children = tris[4 * i:4 * i + 4]
+        assert children[:3, 0].tolist() == parent.tolist()  # (a, ·, ·), (b, ·, ·), (c, ·, ·)
+        np.testing.assert_allclose(centres[4 * i + 3], all_points[parent].mean(axis=0), atol=1e-12)
