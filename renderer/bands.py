@@ -10,7 +10,7 @@ filling the lower half landed on one thread and the sky on the other (measured: 
 A pixel belongs to exactly one band and each band works through its rows in order, so the
 number of bands never changes a byte: a test renders with one band and with many.
 How many bands pay depends on the loop: the scan-conversion loops walk every triangle once
-per band (:func:`raster_bands`: two per thread), shading has no such cost
+per band (:func:`raster_bands`: one per thread), shading has no such cost
 (:data:`SHADING_BANDS`).
 
 The opaque raster deals **blocks** of :data:`BLOCK_ROWS` rows instead of single rows
@@ -36,10 +36,18 @@ SHADING_BANDS = 64
 
 
 def raster_bands(height: int, n_bands: int | None = None) -> int:
-    """Bands for a scan-conversion loop over ``height`` rows: ``n_bands``, by default two per
-    thread, at least 1 and at most one per row."""
+    """Bands for a scan-conversion loop over ``height`` rows: ``n_bands``, by default one per
+    thread, at least 1 and at most one per row.
+
+    Each band walks the whole triangle list (passing over the triangles that miss its rows),
+    so fewer bands, less walking. Measured in one process, frames alternating, one band a
+    thread against two (two threads, the same bytes): igea-270k at 512² 0.94, igea-1m at
+    1024² 0.95, menger4 at 512² 0.96, ico7-flat at 512² 0.98, the small scenes 0.99–1.00.
+    Two per thread were kept while a frame could start two threads on a core another
+    process held (one band then waits for the thread that shares its core); a frame now
+    takes no more threads than the cores left free (:mod:`renderer.free_cores`)."""
     if n_bands is None:
-        n_bands = 2 * numba.get_num_threads()
+        n_bands = numba.get_num_threads()
     return max(1, min(int(n_bands), height))
 
 
@@ -80,7 +88,7 @@ def first_row_of_band(lo, band, n_bands):
 @njit(cache=True, inline="always")
 def band_offset(d, n_bands):
     """``d mod n_bands`` (0 … n_bands − 1, also for a negative ``d``): a mask when ``n_bands``
-    is a power of two, as :func:`raster_bands` gives by default (two per thread on one or
+    is a power of two, as :func:`raster_bands` gives by default (one per thread on one or
     two threads), else a division. The scan-conversion loops ask this once per triangle
     and band: an integer division each time took 4–5 % of a frame of the 270k-triangle
     Igea scan and of a level-4 Menger sponge (two threads, four bands)."""

@@ -3,8 +3,8 @@ processes leave free (the idea of OpenMP's ``OMP_DYNAMIC``, made by the package)
 
 Why: with another process holding one of two cores, the scheduler tends to leave that
 process its core and put both of our threads on the other. A second thread then adds only
-its costs: the raster's bands each walk every triangle, and two threads use four bands where
-one uses two (``scanlab bench --contention`` measured 2 threads / 1 up to 1.08 on the Igea
+its costs: the raster's bands each walk every triangle, and two threads used four bands where
+one used two (``scanlab bench --contention`` measured 2 threads / 1 up to 1.08 on the Igea
 scan, 1.04 on the level-7 icosphere). A frame therefore asks first how busy the machine is.
 
 How busy: the CPU time every process spent (``/proc/stat``, all cores) minus our own (all our

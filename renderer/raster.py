@@ -548,7 +548,7 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     (:func:`rasterize`) over what the batches before it left, so the buffer is the one a
     single pass over all of them fills. With a workspace ``ws`` every array but the frame's
     (depth and coverage, fresh each time) lives in it.
-    ``n_bands`` defaults to two per thread (:func:`renderer.bands.raster_bands`);
+    ``n_bands`` defaults to one per thread (:func:`renderer.bands.raster_bands`);
     ``depth_test=False`` turns the z-buffer test off; ``cull_back=True`` drops back-facing triangles.
     ``backs_last=True`` (with the depth test) draws each batch's back faces after its front
     faces, skipping those a tile z-buffer shows hidden (:mod:`renderer.hidden_back_faces`),

@@ -27,8 +27,9 @@ def test_every_row_goes_to_exactly_one_band():
     assert rows == list(range(3, 41))
 
 
-def test_raster_bands_default_to_two_per_thread_and_never_exceed_the_rows():
-    assert raster_bands(10_000) == 2 * numba.get_num_threads()
+def test_raster_bands_default_to_one_per_thread_and_never_exceed_the_rows():
+    """Each band walks every triangle: as few bands as threads (a frame's threads are the free cores)."""
+    assert raster_bands(10_000) == numba.get_num_threads()
     assert raster_bands(3, 8) == 3 and raster_bands(100, 5) == 5 and raster_bands(0, 5) == 1
 
 
