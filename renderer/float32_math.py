@@ -88,8 +88,13 @@ def pow_f32(x, p):
 
 @njit(cache=True, inline="always")
 def unorm8(c):
-    """Linear 0..1 → the framebuffer's 8 bits: ``round_half_even(clamp(c, 0, 1)·255)`` in float32."""
-    f = np.float32(clamp(c, 0.0, 1.0)) * np.float32(255.0)
+    """Linear 0..1 → the framebuffer's 8 bits: ``round_half_even(clamp(c, 0, 1)·255)`` in float32.
+
+    ``c`` is made float32 before the clamp, not after: 0 and 1 are exact in both widths and
+    rounding to float32 keeps the order, so the bits are those of a clamp in float64 (a NaN
+    stays NaN either way), and a float32 ``c`` is not widened to float64 and back (four
+    conversions a pixel in the scalar loop of :func:`renderer.oit_buffers.resolve_oit_row`)."""
+    f = clamp(np.float32(c), F0, F1) * np.float32(255.0)
     return np.uint8(np.rint(f))
 
 

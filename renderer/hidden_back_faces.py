@@ -93,11 +93,24 @@ def tile_depth(tile_row, tile_col, batch, depth, tiles):
     if tiles[1, tile_row, tile_col] != batch:
         height, width = depth.shape
         deepest = np.int32(0)
+        first, end = tile_col * TILE, smaller(tile_col * TILE + TILE, width)
         for row in range(tile_row * TILE, smaller(tile_row * TILE + TILE, height)):
-            for col in range(tile_col * TILE, smaller(tile_col * TILE + TILE, width)):
-                deepest = larger(deepest, depth[row, col])
+            deepest = larger(deepest, deepest_in_row(depth[row], first, end))
         tiles[0, tile_row, tile_col], tiles[1, tile_row, tile_col] = deepest, batch
     return tiles[0, tile_row, tile_col]
+
+
+@njit(cache=True, inline="always")
+def deepest_in_row(depth_row, first, end):
+    """The largest of ``depth_row[first:end]`` (int32, 0 for none), read with unsigned
+    indices: a signed one costs each read a test for a negative index (numba wraps it
+    around), and LLVM then read the values one by one through a vector gather
+    (``vpgatherqd``, 9 % of the raster's time for the 1,024-segment cylinder at 1024²)
+    instead of loading them side by side."""
+    deepest = np.int32(0)
+    for col in range(first, end):
+        deepest = larger(deepest, depth_row[np.uint64(col)])
+    return deepest
 
 
 @njit(cache=True, inline="always")

@@ -104,3 +104,26 @@ def test_half_keeps_every_half_float_exactly():
     ours = np.empty_like(every)
     _half_all(every, ours)
     assert np.array_equal(ours.view(np.uint32), every.view(np.uint32))
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_unorm8_gives_the_bits_of_a_clamp_in_float64_for_either_width(dtype):
+    """unorm8 clamps after making its value float32; the bytes are those of the clamp in
+    float64 first (the framebuffer's rule), at the ends, just inside and outside them, at
+    the half-way points of the 8-bit steps and on random values."""
+    from renderer.float32_math import unorm8
+
+    @njit
+    def each(values, out):
+        for i in range(values.shape[0]):
+            out[i] = unorm8(values[i])
+
+    steps = (np.arange(256) + 0.5) / 255.0
+    values = np.concatenate([[0.0, -0.0, 1.0, -1e-50, 1e-50, -0.3, 1.7, 1e30, -1e30, np.nextafter(1.0, 2.0),
+                              np.nextafter(1.0, 0.0)], steps, np.nextafter(steps, 0.0), np.nextafter(steps, 1.0),
+                             np.random.default_rng(5).uniform(-0.2, 1.2, 2000)]).astype(dtype)
+    out = np.empty(len(values), np.uint8)
+    each(values, out)
+    clamped64 = np.clip(values.astype(np.float64), 0.0, 1.0)
+    expected = np.rint(clamped64.astype(np.float32) * np.float32(255.0)).astype(np.uint8)
+    assert np.array_equal(out, expected)

@@ -179,3 +179,11 @@ def test_a_back_face_the_tiles_call_hidden_is_not_drawn(walking):
         shown[case] = (setup.front[won].sum(), (~setup.front[won]).sum())
     assert shown["plain"][1] > 10 and shown["lying tiles"][1] == 0
     assert shown["lying tiles"][0] >= shown["plain"][0] > 10
+
+
+def test_the_deepest_of_a_stretch_of_a_row_is_its_largest_depth_and_0_for_none():
+    from renderer.hidden_back_faces import deepest_in_row
+
+    row = np.random.default_rng(3).integers(0, 1 << 24, 100).astype(np.int32)
+    for first, end in [(0, 100), (3, 19), (17, 18), (96, 100), (40, 40)]:
+        assert deepest_in_row(row, first, end) == (row[first:end].max() if end > first else 0)
