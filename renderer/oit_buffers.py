@@ -25,9 +25,12 @@ F32_ONE = np.float32(1.0)
 
 @njit(cache=True, inline="always")
 def mul8(a, b):
-    """Two 8-bit unorm values multiplied, as an 8-bit blend unit does: round(a·b/255)."""
-    t = np.int64(a) * np.int64(b) + 128
-    return (t + (t >> 8)) >> 8
+    """Two 8-bit unorm values multiplied, as an 8-bit blend unit does: round(a·b/255).
+
+    In int32 (a·b + 128 ≤ 65,153): a loop over bytes then works 16 lanes to a vector
+    register, where int64 products took it to scalar code."""
+    t = np.int32(a) * np.int32(b) + np.int32(128)
+    return (t + (t >> np.int32(8))) >> np.int32(8)
 
 
 @njit(cache=True, inline="always")
@@ -116,29 +119,52 @@ def add_run_to_oit(colour, first, a, c0, count, seen_row, buffers):
 
 
 @njit(cache=True, inline="always")
-def resolve_oit_row(buffers, seen_row, rgb_row, eight, first, last):
-    """The pixels ``first … last`` of a row that got a fragment: their ``oit`` buffers
-    (``buffers`` (W, 5), the row's in a strip) over ``rgb_row`` (W, 3) uint8 (as
-    :func:`oit_resolve`); then those buffers cleared (:func:`clear_oit_strip`'s values), so
-    the strip is clear for the next one without a pass over all its pixels. ``first …
-    last``: the columns the row's runs touched (none when ``first > last``).
+def resolve_scratch(width):
+    """Scratch for :func:`resolve_oit_row` on rows of ``width`` pixels: the five values in
+    planes (5, W) float32, the 8-bit colour and coverage in planes (4, W) uint8, and the
+    colour and coverage again laid out as the frame's bytes (2, 3·W) uint8."""
+    return (np.empty((OIT_VALUES, width), np.float32), np.empty((4, width), np.uint8),
+            np.empty((2, 3 * width), np.uint8))
 
-    First every pixel's 8-bit colour and coverage (:func:`oit_colour8`) into ``eight`` (4,
-    ≥ W) uint8, no branch (a pixel without fragments holds clear buffers); then those with
-    a fragment blended over ``rgb_row``. In one loop this ran scalar: 14 % of a
-    translucent-three frame. Over the whole row (not the touched columns), resolving and
-    clearing took 1.7 and 0.4 ms of a 10.5 ms translucent-three frame at 512² (one thread)."""
+
+@njit(cache=True, inline="always")
+def resolve_oit_row(buffers, rgb_row, scratch, first, last):
+    """The pixels ``first … last`` of a row (the columns its runs touched; none when ``first
+    > last``): their ``oit`` buffers (``buffers`` (W, 5), the row's in a strip) over
+    ``rgb_row`` (W, 3) uint8 (as :func:`oit_resolve`); the buffers then cleared
+    (:func:`clear_oit_strip`'s values), so the strip is clear for the next one without a
+    pass over all its pixels. ``scratch``: :func:`resolve_scratch`.
+
+    Every pixel of the stretch is blended, with a fragment or not: clear buffers give colour
+    0 and coverage 0, and ``blend8(0, 0, v, 255)`` is ``v`` for every 8-bit ``v``, so a pixel
+    without a fragment keeps its bytes, and the blend runs without a branch. Four loops,
+    each LLVM turns into vector code or plain moves: the five values out to planes (the
+    buffers cleared on the way), the 8-bit colour and coverage from the planes
+    (:func:`oit_colour8`, 16 lanes), those laid out as the frame's bytes (r, g, b of a
+    pixel together), and the blend over the row's bytes, one byte a lane (:func:`blend8`).
+    Measured alone on rows of 400 touched pixels, a quarter of them without a fragment:
+    4.3 ns a pixel, against 9.2 for one loop over pixels with a branch (scalar code: the
+    five values lie side by side, and the frame's three bytes too)."""
+    planes, eight, bytewise = scratch
     for col in range(first, last + 1):
         j = np.uint64(col)  # unsigned: no wrap-around
-        eight[0, j], eight[1, j], eight[2, j], eight[3, j] = oit_colour8(
-            buffers[j, SUM_R], buffers[j, SUM_G], buffers[j, SUM_B], buffers[j, WEIGHT], buffers[j, TRANSMIT])
-    for col in range(first, last + 1):
-        if seen_row[col] > 0:
-            rgb_row[col, 0], rgb_row[col, 1], rgb_row[col, 2] = oit_over(
-                eight[0, col], eight[1, col], eight[2, col], eight[3, col], rgb_row[col, 0], rgb_row[col, 1],
-                rgb_row[col, 2])
-    for col in range(first, last + 1):
-        j = np.uint64(col)
+        for c in range(OIT_VALUES):
+            planes[c, j] = buffers[j, c]
         for c in range(TRANSMIT):
             buffers[j, c] = F32_ZERO
         buffers[j, TRANSMIT] = F32_ONE
+    for col in range(first, last + 1):
+        j = np.uint64(col)
+        eight[0, j], eight[1, j], eight[2, j], eight[3, j] = oit_colour8(
+            planes[SUM_R, j], planes[SUM_G, j], planes[SUM_B, j], planes[WEIGHT, j], planes[TRANSMIT, j])
+    three = np.uint64(3)
+    for col in range(first, last + 1):
+        j = np.uint64(col)
+        for c in range(3):
+            bytewise[0, three * j + np.uint64(c)] = eight[c, j]
+            bytewise[1, three * j + np.uint64(c)] = eight[3, j]
+    row_bytes = rgb_row.reshape(rgb_row.size)
+    for q in range(3 * first, 3 * last + 3):
+        p = np.uint64(q)
+        a8 = np.int32(bytewise[1, p])
+        row_bytes[p] = blend8(bytewise[0, p], a8, row_bytes[p], np.int32(255) - a8)

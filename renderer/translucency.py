@@ -45,7 +45,7 @@ from renderer.min_max import larger, smaller
 from renderer.bands import first_row_of_band, one_band_at_a_time, raster_bands, shading_bands
 from renderer.fragment_spans import batch_points, light_batch, lit_in_batches, span_linear_colours
 from renderer.oit_buffers import (F32_ONE, OIT_VALUES, add_run_to_oit, clear_oit_strip, mul8, oit_add, oit_resolve,
-                                  resolve_oit_row)
+                                  resolve_oit_row, resolve_scratch)
 from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
 from renderer.raster import DEPTH_CLEAR, FILL_RULES, TOP_LEFT, WALK_ROWS, pixel_depth, row_depth, row_span, set_up
 from renderer.reflection.materials import PIXEL_FACE_NORMAL
@@ -347,7 +347,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
         scratch = span_scratch(width)  # a run's points, linear colours and texture coordinates
         colour = scratch[1]
         run_points, run_colours, runs = batch_scratch(width)  # a triangle's runs on a strip
-        eight = np.empty((4, width), np.uint8)  # a row's resolved oit colours (resolve_oit_row)
+        resolving = resolve_scratch(width)  # a row's oit values and colours (resolve_oit_row)
         nearest = np.empty(STRIP_ROWS, np.int32)  # the nearest opaque depth of each of the strip's rows
         touched = np.empty((STRIP_ROWS, 2), np.int64)  # the first and last column each row's runs touched
         if not fill:
@@ -419,8 +419,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                         first += whole_lanes(count)
             if not fill:
                 for row in range(lo, hi + 1):
-                    resolve_oit_row(sums[b, row - lo], seen[row], rgb[row], eight, touched[row - lo, 0],
-                                    touched[row - lo, 1])
+                    resolve_oit_row(sums[b, row - lo], rgb[row], resolving, touched[row - lo, 0], touched[row - lo, 1])
 
 
 @njit(cache=True, parallel=True)

@@ -4,7 +4,7 @@ import pytest
 
 from renderer.jit import njit
 from renderer.oit_buffers import (OIT_VALUES, SUM_B, SUM_G, SUM_R, TRANSMIT, WEIGHT, add_run_to_oit, blend8,
-                                  clear_oit_strip, mul8, oit_add, oit_resolve, resolve_oit_row)
+                                  clear_oit_strip, mul8, oit_add, oit_resolve, resolve_oit_row, resolve_scratch)
 
 
 def test_mul8_is_the_rounded_product_over_255():
@@ -12,6 +12,13 @@ def test_mul8_is_the_rounded_product_over_255():
     a, b = np.meshgrid(np.arange(256), np.arange(256))
     ours = np.array([[mul8(x, y) for x, y in zip(ra, rb)] for ra, rb in zip(a, b)])
     np.testing.assert_array_equal(ours, np.rint(a * b / 255.0).astype(int))
+
+
+def test_nothing_blended_over_a_byte_leaves_it_as_it_was():
+    """blend8(0, 0, v, 255) = v for every 8-bit v: what a pixel without fragments (clear
+    buffers: colour 0, coverage 0) gives, so resolve_oit_row blends every pixel without a branch."""
+    v = np.arange(256)
+    np.testing.assert_array_equal([blend8(0, 0, x, 255) for x in v], v)
 
 
 def test_blend8_saturates_at_255():
@@ -77,27 +84,29 @@ def test_runs_give_the_sums_of_one_fragment_at_a_time(width):
 
 
 @njit(cache=False)
-def resolved(buffers, seen_row, rgb_row, first, last):
-    resolve_oit_row(buffers, seen_row, rgb_row, np.empty((4, len(seen_row)), np.uint8), first, last)
+def resolved(buffers, rgb_row, first, last):
+    resolve_oit_row(buffers, rgb_row, resolve_scratch(rgb_row.shape[0]), first, last)
 
 
-def test_a_row_resolves_its_touched_columns_over_the_frame_and_leaves_them_clear():
-    """Columns 3 … 9 of a row of 12 touched, 5 and 8 of them without a fragment: the pixels
-    with one get oit_resolve's colour over the frame's, the others keep theirs; the touched
-    columns' buffers come back clear, the rest as they were."""
-    rng = np.random.default_rng(3)
-    width, first, last = 12, 3, 9
-    seen = np.zeros(width, np.int32)
-    seen[first:last + 1] = [1, 2, 0, 1, 3, 0, 1]
+@pytest.mark.parametrize("width, first, last", [(12, 3, 9), (12, 0, 11), (40, 5, 38), (12, 4, 4), (12, 6, 5)])
+def test_a_row_resolves_its_touched_columns_over_the_frame_and_leaves_them_clear(width, first, last):
+    """The touched columns ``first … last`` of a row (one, all, a stretch longer than a vector
+    register, none), some of them without a fragment (their buffers clear, as the strip keeps
+    them): the pixels with one get oit_resolve's colour over the frame's, the others keep
+    theirs; the touched columns' buffers come back clear, the rest as they were."""
+    rng = np.random.default_rng(width + first)
     buffers = np.full((width, OIT_VALUES), 5.0, np.float32)
-    buffers[first:last + 1, :TRANSMIT] = rng.uniform(0.0, 1.0, (last - first + 1, TRANSMIT)).astype(np.float32)
-    buffers[first:last + 1, TRANSMIT] = rng.uniform(0.1, 0.9, last - first + 1).astype(np.float32)
+    n = max(last - first + 1, 0)
+    buffers[first:last + 1, :TRANSMIT] = rng.uniform(0.0, 1.0, (n, TRANSMIT)).astype(np.float32)
+    buffers[first:last + 1, TRANSMIT] = rng.uniform(0.1, 0.9, n).astype(np.float32)
+    empty = [c for c in range(first, last + 1) if c % 3 == 2]  # no fragment: clear buffers
+    buffers[empty, :TRANSMIT], buffers[empty, TRANSMIT] = 0.0, 1.0
     before = buffers.copy()
     rgb = rng.integers(0, 256, (width, 3)).astype(np.uint8)
     frame = rgb.copy()
-    resolved(buffers, seen, rgb, first, last)
+    resolved(buffers, rgb, first, last)
     for col in range(width):
-        if seen[col]:
+        if first <= col <= last and col not in empty:
             out = np.zeros(3, np.int64)
             oit_resolve(*before[col], frame[col].astype(np.int64), out)
             np.testing.assert_array_equal(rgb[col], out)
