@@ -104,10 +104,31 @@ def clip_polygon(poly, bary, n, plane, out_poly, out_bary):
     return m
 
 
+ALL_PLANES = (1 << N_PLANES) - 1
+"""Every plane's bit: what :func:`clip_one` cuts against on the plain path."""
+
+
+@njit(cache=True, inline="always")
+def planes_to_cut(triangles, codes, t, trivial):
+    """The planes triangle ``t`` is cut against, as bits: those some corner lies outside of
+    (its corners' outcodes or'ed together); ``trivial`` False: all six (:data:`ALL_PLANES`).
+
+    A plane no corner lies outside of is passed by the whole triangle, and so by every
+    polygon cut from it (its points are weighted means of the corners): the pass
+    (:func:`clip_polygon`) would give the polygon back as it was, vertex for vertex. This is
+    the trivial accept plane by plane, and leaves out, as that does, a cut vertex that
+    rounding would put outside a plane the corners lie on. A sphere filling the view cuts
+    904 triangles (ico5 at 512²) in 70 µs instead of 169 (two threads), the same pieces."""
+    if not trivial:
+        return np.int64(ALL_PLANES)
+    return np.int64(codes[triangles[t, 0]] | codes[triangles[t, 1]] | codes[triangles[t, 2]])
+
+
 @njit(cache=True, from_python=False)
-def clip_one(verts_clip, triangles, t, poly, bary, tmp_poly, tmp_bary):
-    """Sutherland–Hodgman on triangle ``t`` against all six planes: the vertex count of the
-    clipped polygon (< 3: nothing left), its vertices in ``poly`` and weights in ``bary``."""
+def clip_one(verts_clip, triangles, t, planes, poly, bary, tmp_poly, tmp_bary):
+    """Sutherland–Hodgman on triangle ``t`` against the ``planes`` (bits, :func:`planes_to_cut`),
+    in plane order: the vertex count of the clipped polygon (< 3: nothing left), its
+    vertices in ``poly`` and weights in ``bary``."""
     n = np.int64(3)  # not the literal 3: clip_polygon would be compiled for it and again for int64
     for v in range(3):
         for c in range(4):
@@ -115,6 +136,8 @@ def clip_one(verts_clip, triangles, t, poly, bary, tmp_poly, tmp_bary):
         for c in range(3):
             bary[v, c] = 1.0 if c == v else 0.0
     for p in range(N_PLANES):
+        if not planes & (1 << p):
+            continue
         n = clip_polygon(poly, bary, n, p, tmp_poly, tmp_bary)
         for i in range(n):
             for c in range(4):
@@ -178,7 +201,7 @@ def clip_mesh(verts_clip, triangles, ws=None, trivial=True, codes=None) -> Clipp
                         empty(ws, "clip.polygon_bary", (len(straddling), MAX_POLY, 3)),
                         empty(ws, "clip.polygon_n", len(straddling), np.int64))
     if len(straddling):  # a scene inside the view volume never compiles or runs the cutting
-        cut_polygons(verts_clip, triangles, straddling, counts, cut, *polygons)
+        cut_polygons(verts_clip, triangles, codes, bool(trivial), straddling, counts, cut, *polygons)
     piece_offsets = np.zeros(len(straddling) + 1, np.int64)
     np.cumsum(counts[straddling], out=piece_offsets[1:])
     p = int(piece_offsets[-1])
@@ -224,16 +247,19 @@ polygon for them all (not one allocated per triangle)."""
 
 
 @njit(cache=True, parallel=True)
-def cut_polygons(verts_clip, triangles, straddling, counts, cut, poly, bary, n):
+def cut_polygons(verts_clip, triangles, codes, trivial, straddling, counts, cut, poly, bary, n):
     """Second pass, the ``straddling`` triangles only, :data:`CLIP_CHUNK` at a time: each one
-    cut (:func:`clip_one`), its polygon kept in row i of ``poly``, ``bary`` and ``n`` (a
-    :class:`Polygons`) for :func:`write_pieces`; how many triangles it leaves into
-    ``counts``, and whether it leaves any, into ``cut``."""
+    cut (:func:`clip_one`) against the planes a corner lies outside of (``codes``, the
+    vertices' outcodes; ``trivial`` False: all six, :func:`planes_to_cut`), its polygon
+    kept in row i of ``poly``, ``bary`` and ``n`` (a :class:`Polygons`) for
+    :func:`write_pieces`; how many triangles it leaves into ``counts``, and whether it
+    leaves any, into ``cut``."""
     for chunk in prange((straddling.shape[0] + CLIP_CHUNK - 1) // CLIP_CHUNK):
         tmp_poly, tmp_bary = np.empty((MAX_POLY, 4)), np.empty((MAX_POLY, 3))
         for i in range(chunk * CLIP_CHUNK, smaller(chunk * CLIP_CHUNK + CLIP_CHUNK, straddling.shape[0])):
             t = straddling[i]
-            n[i] = clip_one(verts_clip, triangles, t, poly[i], bary[i], tmp_poly, tmp_bary)
+            n[i] = clip_one(verts_clip, triangles, t, planes_to_cut(triangles, codes, t, trivial), poly[i], bary[i],
+                            tmp_poly, tmp_bary)
             counts[t], cut[t] = larger(n[i] - 2, 0), n[i] >= 3
 
 

@@ -387,7 +387,10 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     vis = rasterize_visibility(opaque.indexed(), width, height, rules.fill_rule, ws=ws,
                                depth_test=rules.depth_test, cull_back=rules.cull_back, batch=BATCH if lean else None,
                                backs_last=backs_last)
-    if lean and renumbering_pays(opaque.count, height, width):  # the winners only, numbered as the rows show them
+    lights = view_lights(scene.lights, cam, w2v, scene.render)
+    inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
+    reads = fragment_reads(inputs, options.spans)
+    if lean and renumbering_pays(opaque.count, height, width, held=reads == HELD):  # the winners only, in sight order
         won = opaque.take(visible_triangles(vis.tri_index, opaque.count, ws))
     else:
         won = opaque  # vis.tri_index counts every opaque triangle
@@ -395,11 +398,9 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
         face_normals_of(geo.verts_view, geo.triangles, shown_sources(won, clipped.clip_source[translucent]),
                         geo.face_normals)
 
-    lights = view_lights(scene.lights, cam, w2v, scene.render)
-    inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
     perspective = (options.interpolation or scene.render.interpolation) == "perspective"
     rgb = np.empty((height, width, 3), np.uint8)
-    frags = shading_fragments(won, vis.tri_index, perspective, ws, fragment_reads(inputs, options.spans))
+    frags = shading_fragments(won, vis.tri_index, perspective, ws, reads)
     shade(frags, geo, inputs,
           to_8bit(np.asarray(scene.image.background)), rgb, spans=options.spans)
     coverage = vis.covered

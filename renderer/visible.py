@@ -61,13 +61,23 @@ renumbering to with it: the 1,024-segment cylinder (4,096 triangles) 0.97 at 512
 1024²; the textured sphere (5,120) 1.02 and 0.96; ico5 (20,480) 1.05 at 512² (12.8 pixels a
 triangle: renumbered) and 0.98 at 1024² (51)."""
 
+HELD_PIXELS_PER_TRIANGLE = 10
+""":data:`PIXELS_PER_TRIANGLE` for a frame painted from colours held per triangle
+(:data:`renderer.shading.HELD`: flat under a headlight). Its tables are a colour and a plane
+normal a triangle, worked out for every triangle when they are not renumbered, so
+renumbering pays only for more triangles. Measured, frames alternating in one process, 40
+pairs, frame time without renumbering / with it: ico5-flat at 512² (12.8 pixels a triangle)
+0.95; the level-3 sponge (36,096 triangles) 1.03 at 512² (7.3), 0.96 at 1024² (29); the
+level-7 icosphere 1.11 and 1.03 (0.8 and 3.2), the level-4 sponge 1.15 and 1.21 (0.4, 1.6)."""
 
-def renumbering_pays(count: int, height: int, width: int) -> bool:
+
+def renumbering_pays(count: int, height: int, width: int, held: bool = False) -> bool:
     """Whether to renumber the winners of ``count`` triangles on an image ``height`` × ``width``
     (:func:`visible_triangles`): when it has fewer than :data:`PIXELS_PER_TRIANGLE` pixels
-    for each triangle. Otherwise the pass over the pixels costs more than the table rows of
-    the triangles that won none; shading then reads the raster's numbers as they are."""
-    return count * PIXELS_PER_TRIANGLE > height * width
+    for each triangle (:data:`HELD_PIXELS_PER_TRIANGLE` for a frame painted from ``held``
+    colours). Otherwise the pass over the pixels costs more than the table rows of the
+    triangles that won none; shading then reads the raster's numbers as they are."""
+    return count * (HELD_PIXELS_PER_TRIANGLE if held else PIXELS_PER_TRIANGLE) > height * width
 
 
 def visible_triangles(tri_index: np.ndarray, count: int, ws=None) -> np.ndarray:

@@ -193,6 +193,34 @@ def test_trivial_accept_and_reject_give_what_cutting_every_triangle_gives(seed):
         np.testing.assert_array_equal(a, b)
 
 
+@pytest.mark.parametrize("plane", range(6), ids=["near", "far", "right", "left", "top", "bottom"])
+def test_a_triangle_is_cut_only_against_the_planes_its_corners_lie_outside_of(plane):
+    """Triangles straddling one plane, their other corners inside or lying exactly on the other
+    planes (x = w, y = −w, z = w): cut against that plane alone (:func:`renderer.clip.planes_to_cut`),
+    they leave the pieces, corners and weights that cutting against all six gives."""
+    from renderer.clip import ALL_PLANES, outcodes, planes_to_cut
+
+    rng = np.random.default_rng(11 + plane)
+    inside = rng.uniform(-0.9, 0.9, (200, 4))
+    inside[:, 3] = 1.0
+    on_edges = inside.copy()
+    on_edges[0::3, 0], on_edges[1::3, 1], on_edges[2::3, 2] = 1.0, -1.0, 1.0  # on the right, bottom and far planes
+    outside = inside.copy()
+    axis, sign = [(2, -1), (2, 1), (0, 1), (0, -1), (1, 1), (1, -1)][plane]
+    outside[:, axis] = sign * rng.uniform(1.2, 3.0, 200)
+    verts = np.concatenate([inside, on_edges, outside])
+    tris = np.stack([rng.integers(400, 600, 300), rng.integers(0, 400, 300), rng.integers(0, 400, 300)], axis=1)
+    codes = np.empty(len(verts), np.uint8)
+    outcodes(verts, codes)
+    crossed = [planes_to_cut.py_func(tris, codes, t, True) for t in range(len(tris))]
+    assert set(crossed) == {1 << plane} and planes_to_cut.py_func(tris, codes, 0, False) == ALL_PLANES
+    fast = clip_triangles(verts, tris)
+    plain = clip_triangles(verts, tris, trivial=False)
+    assert len(fast[0]) > len(tris)  # cut into pieces
+    for a, b in zip(fast, plain):
+        np.testing.assert_array_equal(a, b)
+
+
 def test_outcodes_given_are_used_as_the_clipper_would_work_them_out():
     """clip_mesh given the vertices' outcodes (the pipeline's, from the transform) gives what it
     gives working them out itself; codes that say "inside" for a vertex beyond the near plane

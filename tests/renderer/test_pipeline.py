@@ -330,6 +330,7 @@ def test_the_lean_path_gives_the_bytes_of_the_plain_path(settings, renumbered, m
     plain, plain_stages = render_stages(scene, RenderOptions(lean=False))
     monkeypatch.setattr(renderer.pipeline, "BATCH", 7)
     monkeypatch.setattr(renderer.visible, "PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
+    monkeypatch.setattr(renderer.visible, "HELD_PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
     assert renderer.visible.renumbering_pays(1, *scene.image.size) == renumbered
     lean, lean_stages = render_stages(scene, RenderOptions())
     assert 0.3 < plain.coverage.mean() < 1.0
@@ -466,12 +467,15 @@ def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, 
     from renderer.workspace import thread_workspace
 
     monkeypatch.setattr(renderer.visible, "PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
+
+    monkeypatch.setattr(renderer.visible, "HELD_PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
     scene = load_scene("textbook-sphere").with_overrides(shading=shading, model=model)
     triangles = sum(o.mesh.n_triangles for o in scene.objects)
     monkeypatch.setattr(pipeline, "any_face_colour", lambda materials: True)
     expected = render(scene).rgb
     monkeypatch.undo()
     monkeypatch.setattr(renderer.visible, "PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
+    monkeypatch.setattr(renderer.visible, "HELD_PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
     worked_out = []
     original = pipeline.face_normals_of
     monkeypatch.setattr(pipeline, "face_normals_of", lambda *a: worked_out.append(len(np.unique(a[2]))) or original(*a))

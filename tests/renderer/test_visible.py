@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from renderer.raster import EMPTY
-from renderer.visible import PIXELS_PER_TRIANGLE, number_in_sight, renumbering_pays, visible_triangles
+from renderer.visible import HELD_PIXELS_PER_TRIANGLE, PIXELS_PER_TRIANGLE, number_in_sight, renumbering_pays, visible_triangles
 from renderer.workspace import Workspace
 
 
@@ -65,3 +65,16 @@ def test_winners_are_renumbered_when_the_triangles_are_many_for_the_pixels():
     assert not renumbering_pays(20480, 1024, 1024)
     assert not renumbering_pays(4096, 512, 512)
     assert renumbering_pays(512 * 512 // 32 + 1, 512, 512) and not renumbering_pays(512 * 512 // 32, 512, 512)
+
+
+def test_a_frame_painted_from_held_colours_renumbers_only_for_more_triangles():
+    """Held colours (flat under a headlight) cost a colour and a normal a triangle when not
+    renumbered: renumbered below HELD_PIXELS_PER_TRIANGLE pixels a triangle (the level-3
+    sponge, 36,096 triangles, at 512²), not above (the 20,480-triangle sphere at 512², the
+    sponge at 1024²)."""
+    assert HELD_PIXELS_PER_TRIANGLE == 10
+    assert renumbering_pays(36096, 512, 512, held=True)
+    assert not renumbering_pays(20480, 512, 512, held=True) and renumbering_pays(20480, 512, 512)
+    assert not renumbering_pays(36096, 1024, 1024, held=True) and renumbering_pays(36096, 1024, 1024)
+    assert renumbering_pays(512 * 512 // 10 + 1, 512, 512, held=True)
+    assert not renumbering_pays(512 * 512 // 10, 512, 512, held=True)
