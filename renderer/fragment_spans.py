@@ -40,7 +40,7 @@ def span_linear_colours(k, row, c0, count, frags, geo, inputs, scratch):
     :class:`renderer.shading.Fragments` whose ``plane`` is the triangles' set-up (its
     ``tri_index`` is not read); ``inputs``: ``(materials, textures, lights, lit)``."""
     materials, textures, lights, lit = inputs
-    points, colour, _, _, _ = scratch
+    points, colour, _, _ = scratch
     s = frags.clip_source[k]
     o = geo.tri_object[s]
     path = materials.shading_path[o]

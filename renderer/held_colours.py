@@ -23,6 +23,7 @@ import numpy as np
 from renderer.float32_math import unorm8
 from renderer.jit import njit, prange
 from renderer.lit_colours import face_colour
+from renderer.min_max import larger
 from renderer.prefetch import prefetch_row
 from renderer.raster import EMPTY
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, any_face_colour
@@ -131,16 +132,51 @@ def held_colour_table(frags, geo, materials, lights, lit, ws=None) -> np.ndarray
 @njit(cache=True, parallel=True)
 def paint_rows(tri_index, held, background, n_bands, rgb):
     """Shading of a frame whose every object is held (:func:`all_held`): each pixel of
-    ``rgb`` (H, W, 3) uint8 gets its triangle's row of ``held`` (K, 3) uint8, an empty one the
-    8-bit ``background``. The bytes of :func:`renderer.shading.shade_rows_lit_spans`, which
-    copies the same rows along spans. Rows are dealt to ``n_bands`` bands as there
-    (:mod:`renderer.bands`); each pixel is written once."""
+    ``rgb`` (H, W, 3) uint8, C-contiguous, gets its triangle's row of ``held`` (K, 3) uint8,
+    an empty one the 8-bit ``background``. The bytes of
+    :func:`renderer.shading.shade_rows_lit_spans`, which copies the same rows along spans.
+    Rows are dealt to ``n_bands`` bands as there (:mod:`renderer.bands`); each pixel is
+    written once.
+
+    The colours are first packed a triangle to one integer (:func:`packed_colours`), so a
+    pixel's colour is one read, chosen without a branch, and its three bytes go out through
+    the row seen as one line of bytes (byte 3·col + c): LLVM vectorises the loop, a gather
+    and a store of three interleaved bytes. Measured, the kernel alone on its frame's input:
+    ico5-flat at 1024², one thread 1.65 → 0.62 ms, two 0.96 → 0.47; menger3 at 512², two
+    threads 0.23 → 0.14 (the loop before: a branch and three byte stores a pixel)."""
     height, width = tri_index.shape
+    colours, empty_colour = packed_colours(held), pack_colour(background[0], background[1], background[2])
     for band in prange(n_bands):
         for row in range(band, height, n_bands):
-            for col in range(width):
-                k = tri_index[row, col]
-                if k == EMPTY:
-                    rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = background[0], background[1], background[2]
-                else:
-                    rgb[row, col, 0], rgb[row, col, 1], rgb[row, col, 2] = held[k, 0], held[k, 1], held[k, 2]
+            paint_row(tri_index[row], colours, empty_colour, rgb[row].reshape(-1))
+
+
+@njit(cache=True, inline="always")
+def pack_colour(r, g, b):
+    """Three 8-bit values as one uint32: r in bits 0–7, g in 8–15, b in 16–23."""
+    return np.uint32(r) | (np.uint32(g) << np.uint32(8)) | (np.uint32(b) << np.uint32(16))
+
+
+@njit(cache=True, inline="always")
+def packed_colours(held):
+    """(K,) uint32: each row of ``held`` (K, 3) uint8 packed (:func:`pack_colour`); a table of
+    one entry for none (never read: no pixel names a triangle)."""
+    out = np.empty(larger(held.shape[0], 1), np.uint32)
+    out[0] = 0
+    for k in range(held.shape[0]):
+        out[k] = pack_colour(held[k, 0], held[k, 1], held[k, 2])
+    return out
+
+
+@njit(cache=True, inline="always")
+def paint_row(triangles, colours, empty_colour, row_bytes):
+    """One row: pixel ``col`` showing triangle ``triangles[col]`` gets ``colours`` of it
+    (:func:`packed_colours`), an empty one ``empty_colour``, unpacked into bytes 3·col … 3·col + 2
+    of ``row_bytes`` (3W,) uint8."""
+    for col in range(triangles.shape[0]):
+        k = triangles[col]
+        j = np.uint64(col)  # unsigned: no wrap-around for a negative index, which keeps a loop scalar
+        v = colours[np.uint64(k if k != EMPTY else 0)] if k != EMPTY else empty_colour
+        row_bytes[3 * j] = np.uint8(v & np.uint32(255))
+        row_bytes[3 * j + 1] = np.uint8((v >> np.uint32(8)) & np.uint32(255))
+        row_bytes[3 * j + 2] = np.uint8((v >> np.uint32(16)) & np.uint32(255))

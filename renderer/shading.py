@@ -39,7 +39,7 @@ from renderer.lit_colours import face_colour
 from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
-                                         span_normal_only, spans_apply, store_run, store_span)
+                                         span_normal_only, spans_apply, store_span)
 from renderer.spans import (CORNERS, LANES, TEXTURED_CORNERS, SpanTable, face_toward_viewer, span_points, span_setup,
                             span_table, span_table_of_corners, span_tcoords, span_texture_corners,
                             span_textured_points, whole_lanes)
@@ -253,7 +253,7 @@ def modulate_span(k, consts, c0, count, frags, textures, o, scratch):
     (:func:`renderer.spans.span_tcoords`, the bits :func:`shade_textured_run` gives them),
     into the row scratch ``st`` at their columns c0 … c0 + count − 1; then the whole span is
     filtered in one loop (:func:`renderer.texture_sampling.modulate_texels`)."""
-    _, colour, st, _, fixed = scratch
+    _, colour, st, fixed = scratch
     span_tcoords(consts, span_texture_corners(k, frags), count, st, c0)
     modulate_texels(textures, o, st, c0, count, colour, fixed)
 
@@ -273,7 +273,7 @@ def light_span(o, row, c0, c1, consts, face, materials, lights, scratch, rgb):
     from :func:`renderer.spans.span_setup`), stored as 8 bits; when the colour cannot change
     along the span (a flat triangle whose model's colour depends on the normal alone), it is
     worked out at the first pixel and stored along it. ``scratch``: :func:`span_scratch`."""
-    points, colour, _, _, _ = scratch
+    points, colour, _, _ = scratch
     constant = face and span_normal_only(o, materials, lights)
     count = 1 if constant else c1 - c0
     reflect_span(o, materials, lights, consts, face, count, points, colour, rgb[row, c0:c0 + count])
@@ -299,15 +299,13 @@ def lit_per_pixel(o, materials, lights):
 @njit(cache=True, inline="always")
 def span_scratch(width):
     """Scratch of a row: ``(points (6, W + 7), colour (3, W))`` float32 (see :func:`shade_lit_run`),
-    ``st`` (2, W + 7) float32, a span's texture coordinates (:func:`modulate_span`),
-    ``packed`` (W,) uint32, a run's 8-bit colours on their way out
-    (:func:`renderer.reflection.registry.store_run`), and ``fixed`` (2, W) int64, the texels'
-    fixed-point coordinates (:func:`renderer.texture_sampling.filter_span`). The points and
+    ``st`` (2, W + 7) float32, a span's texture coordinates (:func:`modulate_span`), and
+    ``fixed`` (2, W) int64, the texels' fixed-point coordinates (:func:`renderer.texture_sampling.filter_span`). The points and
     coordinates have room for a span's whole vector lanes (:func:`renderer.spans.whole_lanes`)
     past the row's last column."""
     w = larger(width, 1)
     return (np.empty((6, w + LANES - 1), np.float32), np.empty((3, w), np.float32),
-            np.empty((2, w + LANES - 1), np.float32), np.empty(w, np.uint32), np.empty((2, w), np.int64))
+            np.empty((2, w + LANES - 1), np.float32), np.empty((2, w), np.int64))
 
 
 @njit(cache=True, inline="always")
@@ -325,7 +323,7 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     code. ``inputs``: ``(materials, lights)``; ``scratch``: :func:`span_scratch`,
     the points at the pixels' own columns."""
     materials, lights = inputs
-    points, colour, _, packed, _ = scratch
+    points, colour, _, _ = scratch
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start = col
@@ -334,7 +332,7 @@ def shade_lit_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
         col = end
         k, end = next_span_of(o, row, col, frags, geo)
     light_points(o, materials, lights, points, start, col - start, colour)
-    store_run(colour, col - start, packed, rgb[row, start:col])
+    store_span(colour, col - start, rgb[row, start:col])
     return col
 
 
@@ -371,7 +369,7 @@ def shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
     ``(materials, textures, lights, lit)``. Kept apart from :func:`shade_lit_run`, whose
     kernel (:func:`shade_rows_lit_spans`) then compiles no texture code."""
     materials, textures, lights, _ = inputs
-    points, colour, st, packed, fixed = scratch
+    points, colour, st, fixed = scratch
     o = object_of(k, frags, geo)
     face = materials.shading_path[o] == PIXEL_FACE_NORMAL
     start = col
@@ -382,7 +380,7 @@ def shade_textured_run(k, row, col, end, frags, geo, inputs, scratch, rgb):
         k, end = next_span_of(o, row, col, frags, geo)
     light_points(o, materials, lights, points, start, col - start, colour)
     modulate_texels(textures, o, st, start, col - start, colour, fixed)
-    store_run(colour, col - start, packed, rgb[row, start:col])
+    store_span(colour, col - start, rgb[row, start:col])
     return col
 
 
@@ -431,7 +429,7 @@ def shade_span(k, row, c0, c1, frags, geo, inputs, scratch, rgb):
     if (face or path == PIXEL_TWO_SIDED) and span_applies(o, materials, lights):
         consts = span_setup(k, row, c0, frags, geo, face)
         if textured:
-            points, colour, _, _, _ = scratch
+            points, colour, _, _ = scratch
             span_colours(o, materials, lights, consts, face, c1 - c0, points, colour)
             modulate_span(k, consts, c0, c1 - c0, frags, textures, o, scratch)
             store_span(colour, c1 - c0, rgb[row, c0:c1])

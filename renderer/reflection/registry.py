@@ -23,7 +23,7 @@ from renderer.reflection.classic_model import classic_lighting
 from renderer.reflection.materials import Materials
 from renderer.reflection.opengl_model import opengl_lighting
 from renderer.reflection.vtk_model import vtk_lighting
-from renderer.reflection.vtk_spans import (store8, store8_packed, vtk_normal_only, vtk_normals_only, vtk_point_colours, vtk_span,
+from renderer.reflection.vtk_spans import (store8, vtk_normal_only, vtk_normals_only, vtk_point_colours, vtk_span,
                                           vtk_span_applies, vtk_span_colours, vtk_spans_apply)
 
 REFLECTION_MODELS = {m.name: m for m in (vtk_model.MODEL, opengl_model.MODEL, classic_model.MODEL)}
@@ -99,15 +99,10 @@ def light_points(o, materials, lights, points, first, count, colour):
 
 @njit(cache=True, inline="always")
 def store_span(colour, count, out):
-    """``colour`` (3, ≥ count) linear float32 → ``out`` (count, 3) as the framebuffer's 8 bits."""
+    """``colour`` (3, ≥ count) linear float32 → ``out`` (≥ count, 3), C-contiguous, as the
+    framebuffer's 8 bits (:func:`renderer.reflection.vtk_spans.store8`): a span, or a run of
+    many spans."""
     store8(colour, count, out)
-
-
-@njit(cache=True, inline="always")
-def store_run(colour, count, packed, out):
-    """:func:`store_span` for a long run of pixels, through ``packed`` (≥ count,) uint32
-    scratch (:func:`renderer.reflection.vtk_spans.store8_packed`): the same bytes."""
-    store8_packed(colour, count, packed, out)
 
 
 def material_table(scene) -> Materials:

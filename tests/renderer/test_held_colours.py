@@ -2,6 +2,7 @@
 alone): worked out once per triangle, it is the colour of every pixel the triangle shows."""
 from __future__ import annotations
 
+import itertools
 from dataclasses import replace
 
 import numpy as np
@@ -110,13 +111,20 @@ def test_face_colour_triangles_beside_held_or_lit_ones_keep_the_bytes_of_pixel_b
 
 
 def test_paint_rows_gives_each_pixel_its_triangles_row_and_empty_ones_the_background():
+    """Small by hand, then rows longer than a vector register (the kernel's loop runs in lanes)
+    naming the first and the last triangle and empty pixels at random, in one band or
+    several, compiled and as plain Python: each pixel its triangle's bytes or the background's."""
     tri_index = np.array([[-1, 0, 0, 2], [1, 1, -1, 2]], np.int32)
     held = np.array([[10, 20, 30], [40, 50, 60], [70, 80, 90]], np.uint8)
     background = np.array([1, 2, 3], np.uint8)
-    for bands in (1, 2):
-        rgb = np.zeros((2, 4, 3), np.uint8)
-        paint_rows(tri_index, held, background, bands, rgb)
-        expected = np.where((tri_index < 0)[..., None], background, held[np.maximum(tri_index, 0)])
+    rng = np.random.default_rng(5)
+    wide = rng.integers(-1, 300, (5, 77)).astype(np.int32)
+    wide[0, :3] = (0, 299, -1)
+    cases = [(tri_index, held), (wide, rng.integers(0, 256, (300, 3)).astype(np.uint8))]
+    for (triangles, colours), bands, kernel in itertools.product(cases, (1, 2, 3), (paint_rows, paint_rows.py_func)):
+        rgb = np.zeros(triangles.shape + (3,), np.uint8)
+        kernel(triangles, colours, background, bands, rgb)
+        expected = np.where((triangles < 0)[..., None], background, colours[np.maximum(triangles, 0)])
         np.testing.assert_array_equal(rgb, expected)
 
 

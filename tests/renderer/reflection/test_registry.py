@@ -69,24 +69,27 @@ def test_a_flat_textbook_object_is_lit_once_per_face():
         == [FACE_COLOUR]
 
 
-def test_a_run_is_stored_through_packed_pixels_with_the_bytes_of_a_span():
-    """store_run (8-bit values packed a pixel to a uint32, then unpacked) writes exactly the
-    bytes store_span writes, for colours below 0, above 1, on rounding ties and in between,
-    on runs shorter and longer than a vector register; nothing past the run is touched."""
+def test_a_span_is_stored_as_round_half_even_of_its_clamped_colours_three_bytes_a_pixel():
+    """store_span (one vectorised loop over the bytes of the row, r, g, b side by side) writes
+    round_half_even(clamp(c, 0, 1)·255) of each channel, as numpy works it out in float32, for
+    colours below 0, above 1, on rounding ties and in between, into a row of a frame
+    (H, W, 3), for spans shorter and longer than a vector register; nothing past the span is
+    touched."""
     from renderer.jit import njit
-    from renderer.reflection.registry import store_run, store_span
+    from renderer.reflection.registry import store_span
 
     @njit
-    def both(colour, count, packed, a, b):
-        store_span(colour, count, a)
-        store_run(colour, count, packed, b)
+    def into_row(colour, count, rgb, row, first):
+        store_span(colour, count, rgb[row, first:first + count])
 
     rng = np.random.default_rng(3)
     ties = (np.arange(256) + 0.5).astype(np.float32) / np.float32(255)
-    for count in (1, 7, 8, 9, 300):
+    for count in (1, 7, 8, 9, 63, 300):
         colour = rng.uniform(-0.2, 1.2, (3, 300)).astype(np.float32)
         colour[:, ::3] = ties[rng.integers(0, 256, (3, 100))]
-        a, b = np.full((301, 3), 7, np.uint8), np.full((301, 3), 7, np.uint8)
-        both(colour, count, np.empty(300, np.uint32), a[:count], b[:count])
-        np.testing.assert_array_equal(b, a)
-        assert (a[count:] == 7).all() and len(np.unique(a[:count])) > min(count, 40)
+        rgb = np.full((3, 320, 3), 7, np.uint8)
+        into_row(colour, count, rgb, 1, 5)
+        expected = np.rint(np.clip(colour[:, :count], np.float32(0), np.float32(1)) * np.float32(255)).astype(np.uint8)
+        np.testing.assert_array_equal(rgb[1, 5:5 + count], expected.T)
+        rgb[1, 5:5 + count] = 7
+        assert (rgb == 7).all() and len(np.unique(expected)) > min(count, 40)
