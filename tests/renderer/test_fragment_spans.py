@@ -71,10 +71,10 @@ def colours_of_runs(path, lights, model="vtk", texture=(None, "repeat"), run=RUN
     out = np.empty((32, 3, 2 * RUN), np.float32)
     # texture coordinates go to their own columns of a row's scratch (as points do in the shading kernels)
     points, colour, st = np.empty((6, RUN), np.float32), np.empty((3, RUN), np.float32), np.empty((2, 2 * RUN), np.float32)
-    packed, fixed = np.empty(RUN, np.uint32), np.empty((2, 2 * RUN), np.int64)
+    fixed = np.empty((2, 2 * RUN), np.int64)
     for row in range(32):
         for c0 in range(0, 2 * RUN, run):
-            span_linear_colours(0, row, c0, run, frags, geo, inputs, (points, colour, st, packed, fixed))
+            span_linear_colours(0, row, c0, run, frags, geo, inputs, (points, colour, st, fixed))
             out[row, :, c0:c0 + run] = colour[:, :run]
     return out, (frags, geo, inputs)
 

@@ -326,5 +326,5 @@ def test_a_span_of_half_a_vector_or_more_is_worked_out_in_whole_vectors():
     assert [whole_lanes(n) for n in range(LANES // 2)] == list(range(LANES // 2))
     for n in range(LANES // 2, 5 * LANES):
         assert whole_lanes(n) % LANES == 0 and n <= whole_lanes(n) < n + LANES
-    points, _, st, _, _ = span_scratch(37)
+    points, _, st, _ = span_scratch(37)
     assert points.shape[1] >= whole_lanes(37) and st.shape[1] >= whole_lanes(37)
