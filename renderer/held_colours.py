@@ -176,6 +176,7 @@ def paint_row(triangles, colours, empty_colour, row_bytes):
     for col in range(triangles.shape[0]):
         k = triangles[col]
         j = np.uint64(col)  # unsigned: no wrap-around for a negative index, which keeps a loop scalar
+        # the index is a valid one for an empty pixel too: the loop in lanes reads every lane, then chooses
         v = colours[np.uint64(k if k != EMPTY else 0)] if k != EMPTY else empty_colour
         row_bytes[3 * j] = np.uint8(v & np.uint32(255))
         row_bytes[3 * j + 1] = np.uint8((v >> np.uint32(8)) & np.uint32(255))

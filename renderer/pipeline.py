@@ -401,8 +401,7 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     perspective = (options.interpolation or scene.render.interpolation) == "perspective"
     rgb = np.empty((height, width, 3), np.uint8)
     frags = shading_fragments(won, vis.tri_index, perspective, ws, reads)
-    shade(frags, geo, inputs,
-          to_8bit(np.asarray(scene.image.background)), rgb, spans=options.spans)
+    shade(frags, geo, inputs, to_8bit(np.asarray(scene.image.background)), rgb, spans=options.spans, reads=reads)
     coverage = vis.covered
     if translucent.any():
         coverage = coverage | draw_translucent(clipped.take(translucent).written_out(), vis.depth, rgb, geo, inputs,

@@ -549,18 +549,19 @@ def paint_background(background: np.ndarray, rgb: np.ndarray) -> None:
 
 
 def shade(frags: Fragments, geo, inputs: ShadingInputs, background: np.ndarray, rgb: np.ndarray,
-          n_bands: int | None = None, spans: bool = True) -> None:
+          n_bands: int | None = None, spans: bool = True, reads: str | None = None) -> None:
     """Shade the visibility buffer ``frags`` into ``rgb`` (H, W, 3) uint8, window rows (the
     Python wrapper). ``background`` is the 8-bit clear colour; ``n_bands`` defaults to
     :func:`renderer.bands.shading_bands`; ``spans=False`` shades pixel by pixel (the plain
-    path, for tests); a frame without triangles is painted with the background
-    (:func:`paint_background`)."""
+    path, for tests); ``reads``: :func:`fragment_reads` of ``inputs`` and ``spans`` when the
+    caller has it (the pipeline chose the fragments' tables by it), else worked out here; a
+    frame without triangles is painted with the background (:func:`paint_background`)."""
     if len(frags.clip_source) == 0:  # no triangle (nothing opaque): the background everywhere, no threads started
         paint_background(background, rgb)
         return
     height = frags.tri_index.shape[0]
     n_bands = shading_bands(height) if n_bands is None else max(1, min(int(n_bands), height))
-    reads = fragment_reads(inputs, spans)
+    reads = fragment_reads(inputs, spans) if reads is None else reads
     if reads == HELD:
         held = held_colour_table(frags, geo, inputs.materials, inputs.lights, inputs.lit, thread_workspace())
         with one_band_at_a_time():
