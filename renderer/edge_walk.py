@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from renderer.jit import njit
 from renderer.min_max import larger, smaller
+from renderer.visibility_buffer import fill_columns
 from renderer.window import SUBPIXEL
 
 LEFT, RIGHT = 0, 1
@@ -119,3 +120,20 @@ def walked_columns(long_walk, short_walk, top_left, width):
     if long_walk[0] == LEFT:
         return larger(long_bound, 0), smaller(short_bound - 1, width - 1)
     return larger(short_bound, 0), smaller(long_bound - 1, width - 1)
+
+
+@njit(cache=True, inline="always")
+def fill_walked(lo, hi, long_walk, short_walk, plane, kk, top_left, depth_test, depth, tri_index):
+    """Fill rows ``lo … hi`` of the triangle numbered ``kk`` in the visibility buffer, whose
+    set-up row is ``plane`` (11,) (:class:`renderer.raster.TriangleSetup`), each row's span
+    between its two walked edges at row ``lo`` (:func:`walked_columns`), then both edges a
+    row on; returns the long edge's walk at row ``hi + 1``. The depth plane is read once for
+    the stretch; each row's constant part is :func:`renderer.raster.row_depth`'s expression
+    on those values."""
+    width = depth.shape[1]
+    ax, ay, az, zx, zy = plane[6], plane[7], plane[8], plane[9], plane[10]
+    for row in range(lo, hi + 1):
+        first, last = walked_columns(long_walk, short_walk, top_left, width)
+        fill_columns(row, first, last, az + zy * (row + 0.5 - ay), zx, ax, kk, depth_test, depth, tri_index)
+        long_walk, short_walk = walk_on(long_walk), walk_on(short_walk)
+    return long_walk

@@ -49,11 +49,15 @@ TILE = 16
 
 BACKS_LAST_ROWS = 8
 """The rows a batch's triangles must span on average (:func:`renderer.raster.mean_rows`) for
-the raster to draw its back faces last: for smaller ones a second pass over the batch
-costs more than the hidden ones save. Measured, two threads, whole frames, back faces
-last against in order: a 1,024-segment cylinder (127 rows) at 512² 0.78; ico5 at 1024²
-(19 rows) 0.83; but ico7 at 512² (2.5 rows) 1.15–1.18, even with no tile ever tested
-(1.15: the second pass alone), and the 270k-triangle Igea scan 1.23."""
+the raster to draw its back faces last: for smaller ones the tiles' tests cost more than
+the hidden ones save. Measured, two threads, whole frames, back faces last against in
+order: a 1,024-segment cylinder (127 rows) at 512² 0.78; ico5 at 1024² (19 rows) 0.83;
+but ico7 at 512² (2.5 rows) 1.15–1.18, and the 270k-triangle Igea scan 1.23 (before the
+passes read lists by facing, :mod:`renderer.draw_lists`). With the lists, frames
+alternating in one process (20 pairs), from 4 rows / from 8: ico7 at 1024² (4.9 rows) 0.94
+flat and 0.98 phong, but the level-4 sponge at 1024² (5–6 rows, its holes keep the tiles
+deep) 1.11, the Igea scan 0.99."""
+
 
 NO_BATCH = -1
 """The mark of a tile worked out for no batch yet (batches are marked with their first
@@ -69,8 +73,12 @@ def new_tiles(height: int, width: int, ws=None) -> np.ndarray:
     return tiles
 
 
-NO_TILES = np.empty((2, 0, 0), np.int32)
-"""The tile z-buffer of a frame drawn in plain order (no back faces last)."""
+NO_TILES = None
+"""The tile z-buffer of a frame drawn in plain order (no back faces last): the raster's band
+kernels compile a loop of their own for it (:func:`renderer.raster.band_dividing`)."""
+
+UNTESTED = np.empty((2, 0, 0), np.int32)
+"""Tiles no block is tested against (a front face's, or any in plain order)."""
 
 
 @njit(cache=True, inline="always")

@@ -29,9 +29,9 @@ Rules, each in one place:
   so coincident triangles get bit-identical depths whatever order they list their corners
   in, and the tie goes to the later one everywhere.
 
-- **Back faces last** (:mod:`renderer.hidden_back_faces`): with the z-buffer on, a band
-  draws a batch's front faces, then its back faces, skipping those a tile z-buffer shows
-  hidden; the depth test's tie rule gives the pixels drawing in order gives.
+- **Back faces last** (:mod:`renderer.hidden_back_faces`, :mod:`renderer.band_draw`): with
+  the z-buffer on, a band draws a batch's front faces, then its back faces, skipping those
+  a tile z-buffer shows hidden; the depth test's tie rule gives the pixels drawing in order gives.
 
 Determinism: every pixel sees the triangles in the order given (objects in scene order,
 triangles in mesh order), as OpenGL guarantees, so ties resolve the same way every run.
@@ -47,12 +47,14 @@ from renderer.jit import njit, prange
 from renderer.min_max import clamp, larger, smaller
 
 from renderer.clip import CornerIndex, corner_row
-from renderer.bands import BLOCK_ROWS, first_block_of_band, one_band_at_a_time, raster_bands
+from renderer.bands import BLOCK_ROWS, one_band_at_a_time, raster_bands
 from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibility, clear_band, clear_visibility,
                                         depth_bits, depth_to_window, fill_columns, finish_band)
+from renderer.band_draw import draw_band
+from renderer.draw_lists import LIST_CHUNK, list_by_facing
 from renderer.edge_functions import fill_narrow_rows, lanes_start
-from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
-from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, fragment_depth_floor, hidden_in_tiles, new_tiles
+from renderer.edge_walk import edge_walk, fill_walked, split_at_middle
+from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, new_tiles
 from renderer.pixel_centres import LONE_ROWS, ceil_div, centre_rows
 from renderer.window import SUBPIXEL, signed_area_corners, window_edges
 from renderer.workspace import empty
@@ -72,7 +74,8 @@ class TriangleSetup(NamedTuple):
     zx, zy (:func:`depth_plane`). A triangle that draws nothing (no area, culled, or no pixel
     centre it can cover: :mod:`renderer.pixel_centres`) gets no rows, ``ccw`` or depth plane.
     row_sums (C,) int64: for each chunk of :data:`SETUP_CHUNK` triangles the rows they span
-    together (for :func:`mean_rows`).
+    together (for :func:`mean_rows`). listed (K,) int32, counts (⌈K / LIST_CHUNK⌉, 2) int64: for back faces
+    drawn last, the triangles that draw by facing (:func:`renderer.draw_lists.list_by_facing`).
     """
 
     front: np.ndarray
@@ -80,6 +83,8 @@ class TriangleSetup(NamedTuple):
     rows: np.ndarray
     plane: np.ndarray
     row_sums: np.ndarray
+    listed: np.ndarray
+    counts: np.ndarray
 
 
 @njit(cache=True, inline="always")
@@ -184,9 +189,8 @@ def set_up_range(chunk, corners, fixed, window, height, drops, front, ccw, rows,
 
     Without reference counts (``refcounts=False``; it makes no array): each triangle's row of
     ``plane`` is a view, which would be counted with an atomic increment and decrement a
-    triangle. Whole frames with and without the counts, timed across processes, differ by
-    no more than the noise (igea-1m 512² 0.98, igea-270k 1024² 1.00, ico7-phong 512² 1.00,
-    docs/performance.md, "Two copies of a kernel in one process")."""
+    triangle. Whole frames with and without, across processes, differ within the noise
+    (igea-1m 512² 0.98, igea-270k 1024² 1.00, ico7-phong 512² 1.00, docs/performance.md)."""
     first = chunk * SETUP_CHUNK
     spanned = 0
     for k in range(first, smaller(first + SETUP_CHUNK, np.uint64(corners.source.shape[0]))):
@@ -297,9 +301,9 @@ sponge at 512² (9–11) 12.7 → 10.6, a level-4 one at 1024² (5–6) 151 → 
 def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index):
     """Fill rows ``lo … hi`` of triangle ``k`` (numbered ``first_index + k`` in the
     visibility buffer) by walking its edges: split at its middle corner
-    (:func:`renderer.edge_walk.split_at_middle`), each row's span is bounded by the long edge
-    and by the low or the high one, both stepped row by row (:func:`fill_walked`; two divisions
-    per edge for the whole stretch). A stretch of fewer than :data:`WALK_ROWS` rows, and one
+    (:func:`renderer.edge_walk.split_at_middle`), each row's span bounded by the long edge and
+    the low or the high one, both stepped row by row (:func:`renderer.edge_walk.fill_walked`;
+    two divisions an edge for the whole stretch). A stretch of fewer than :data:`WALK_ROWS` rows, and one
     of at most :data:`NARROW_ROWS` of a triangle at most eight columns wide, goes to
     :func:`fill_rows_dividing` instead (the narrow one by its edge functions)."""
     if hi - lo < WALK_ROWS - 1 or (hi - lo + 1 <= NARROW_ROWS and lanes_start(setup.ccw[k], depth.shape[1])[0] >= 0):
@@ -315,22 +319,6 @@ def fill_rows(k, lo, hi, setup, rule, depth_test, first_index, depth, tri_index)
     if top <= hi:
         fill_walked(top, hi, long_walk, edge_walk(f, high_edge, top, 1, top_left),
                     setup.plane[k], np.int32(first_index + k), top_left, depth_test, depth, tri_index)
-
-
-@njit(cache=True, inline="always")
-def fill_walked(lo, hi, long_walk, short_walk, plane, kk, top_left, depth_test, depth, tri_index):
-    """Fill rows ``lo … hi`` of the triangle numbered ``kk`` in the visibility buffer, whose
-    set-up row is ``plane`` (11,) (:class:`TriangleSetup`), each row's span between its two
-    walked edges at row ``lo`` (:func:`renderer.edge_walk.walked_columns`), then both edges a
-    row on; returns the long edge's walk at row ``hi + 1``. The depth plane is read once for
-    the stretch; each row's constant part is :func:`row_depth`'s expression on those values."""
-    width = depth.shape[1]
-    ax, ay, az, zx, zy = plane[6], plane[7], plane[8], plane[9], plane[10]
-    for row in range(lo, hi + 1):
-        first, last = walked_columns(long_walk, short_walk, top_left, width)
-        fill_columns(row, first, last, az + zy * (row + 0.5 - ay), zx, ax, kk, depth_test, depth, tri_index)
-        long_walk, short_walk = walk_on(long_walk), walk_on(short_walk)
-    return long_walk
 
 
 @njit(cache=True, inline="always")
@@ -363,43 +351,13 @@ def fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_in
                  np.int32(first_index + k), depth_test, depth, tri_index)
 
 
-@njit(cache=True, inline="always")
-def draw_band(b, setup, n_bands, block_rows, rule, depth_test, first_index, buffer, fill_stretch, tiles):
-    """Band ``b``'s share of :func:`rasterize`: every triangle drawn on its rows, a block of
-    ``block_rows`` rows at a time (block j belongs to band j mod ``n_bands``), each block's
-    rows ``top … bottom`` of triangle ``k`` filled by ``fill_stretch(k, top, bottom, …)``:
-    :func:`fill_rows_dividing` (one division per edge and row) or :func:`fill_rows` (the
-    edges walked). Each kernel passes its own, inlined there, so the dividing kernel never
-    compiles the walk. ``buffer`` is the visibility buffer's ``(depth, tri_index)``.
-
-    With a tile z-buffer ``tiles`` (not ``NO_TILES``): the front faces, then the back faces,
-    each block of their rows skipped where the tiles show it hidden (:mod:`renderer.hidden_back_faces`)."""
-    depth, tri_index = buffer
-    backs_last = tiles.shape[1] > 0
-    for backs in range(2 if backs_last else 1):
-        for k in range(setup.ccw.shape[0]):
-            if backs_last and setup.front[k] == (backs == 1):
-                continue
-            lo, hi = setup.rows[k, 0], setup.rows[k, 1]
-            if lo > hi:  # no row of pixel centres (:func:`renderer.pixel_centres.centre_rows`), or nothing to draw
-                continue
-            block = first_block_of_band(lo, b, n_bands, block_rows)
-            floor = -1  # worked out at the first block this band draws: most triangles have none here
-            while block * block_rows <= hi:
-                top, bottom = larger(lo, block * block_rows), smaller(hi, block * block_rows + block_rows - 1)
-                if backs and floor < 0:
-                    floor = fragment_depth_floor(setup.ccw[k], setup.plane[k])
-                if not backs or not hidden_in_tiles(floor, setup.ccw[k], top, bottom, first_index, depth, tiles):
-                    fill_stretch(k, top, bottom, setup, rule, depth_test, first_index, depth, tri_index)
-                block += n_bands
-
-
 @njit(cache=True, from_python=False, refcounts=False)
 def band_dividing(b, setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, tiles):
     """Band ``b``'s whole share of :func:`rasterize`: its rows cleared for the first batch
     (``ends`` has :data:`FIRST_BATCH`, :func:`clear_band`), then every triangle drawn on them
-    (:func:`draw_band` with :func:`fill_rows_dividing`, back faces last with a tile
-    z-buffer ``tiles``), in blocks of :data:`renderer.bands.BLOCK_ROWS` rows.
+    (:func:`renderer.band_draw.draw_band` with :func:`fill_rows_dividing`), in blocks of
+    :data:`renderer.bands.BLOCK_ROWS` rows: in draw order when ``tiles`` is None, else back
+    faces last behind the tile z-buffer ``tiles``; numba compiles the kernel apart for each.
 
     A kernel of its own, called from the parallel loop rather than inlined into it: numba's
     parallel passes then analyse a one-line loop body, not the whole fill (measured, a cold
@@ -410,8 +368,8 @@ def band_dividing(b, setup, n_bands, rule, depth_test, first_index, ends, depth,
     (menger3, 512², one thread, 12.8–13.3 → 13.8–14.0 ms; without the counts 12.7–13.0)."""
     if ends & FIRST_BATCH:
         clear_band(b, n_bands, BLOCK_ROWS, depth, tri_index)
-    draw_band(b, setup, n_bands, BLOCK_ROWS, rule, depth_test, first_index, (depth, tri_index), fill_rows_dividing,
-              tiles)
+    draw_band(b, setup, (n_bands, BLOCK_ROWS), (rule, depth_test, first_index), (depth, tri_index),
+              fill_rows_dividing, tiles)
 
 
 @njit(cache=True, from_python=False, refcounts=False)
@@ -420,7 +378,8 @@ def band_walking(b, setup, n_bands, rule, depth_test, first_index, ends, depth, 
     rows, the spans found by walking the edges (:func:`fill_rows`)."""
     if ends & FIRST_BATCH:
         clear_band(b, n_bands, WALK_BLOCK_ROWS, depth, tri_index)
-    draw_band(b, setup, n_bands, WALK_BLOCK_ROWS, rule, depth_test, first_index, (depth, tri_index), fill_rows, tiles)
+    draw_band(b, setup, (n_bands, WALK_BLOCK_ROWS), (rule, depth_test, first_index), (depth, tri_index), fill_rows,
+              tiles)
 
 
 FIRST_BATCH, LAST_BATCH = 1, 2
@@ -439,7 +398,7 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_in
     first batch: ``ends`` has :data:`FIRST_BATCH`). A pixel belongs to one band and sees the
     triangles in draw order, so the result is the same, bit for bit, as a serial loop
     (z-buffer ties included), also with a tile z-buffer ``tiles``: back faces last
-    (:func:`draw_band`). After the last batch (:data:`LAST_BATCH`) each band writes its rows'
+    (:func:`renderer.band_draw.draw_band`). After the last batch (:data:`LAST_BATCH`) each band writes its rows'
     coverage into ``covered`` (H, W) bool (:func:`renderer.visibility_buffer.finish_band`).
     ``depth_test`` False draws every fragment over what is there (the painter's algorithm, or no hidden-surface removal
     at all): then the last triangle drawn wins.
@@ -480,8 +439,7 @@ def weights_of_visible(plane, tri_index, bary):
 
 
 BATCH = 1 << 15
-"""Triangles set up and drawn at a time: the set-up tables stay this long (about 5 MB),
-however many triangles the scene has."""
+"""Triangles set up and drawn at a time: the set-up tables stay this long (about 5 MB)."""
 
 
 class IndexedTriangles(NamedTuple):
@@ -515,13 +473,16 @@ def set_up_corners(corners: CornerIndex, fixed: np.ndarray, window: np.ndarray, 
     triangles whose corners ``corners`` names among the rows of ``fixed`` (M, 2) and ``window`` (M, 3);
     ``lone_test``: drop those whose box's lone pixel centre is outside (:data:`DROP_MISSED_CENTRES`)."""
     k_count = len(corners.source)
+    chunks, lists = -(-k_count // int(SETUP_CHUNK)), -(-k_count // LIST_CHUNK)
     setup = TriangleSetup(front=empty(ws, f"{name}.front", k_count, np.bool_),
                           ccw=empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64),
                           rows=empty(ws, f"{name}.rows", (k_count, 2), np.int64),
                           plane=empty(ws, f"{name}.plane", (k_count, 11)),
-                          row_sums=empty(ws, f"{name}.row_sums", -(-k_count // int(SETUP_CHUNK)), np.int64))
+                          row_sums=empty(ws, f"{name}.row_sums", chunks, np.int64),
+                          listed=empty(ws, f"{name}.listed", k_count, np.int32),
+                          counts=empty(ws, f"{name}.counts", (lists, 2), np.int64))
     drops = (DROP_BACK_FACES if cull_back else 0) | (DROP_MISSED_CENTRES if lone_test else 0)
-    setup_triangles(corners, fixed, window, height, drops, *setup)
+    setup_triangles(corners, fixed, window, height, drops, *setup[:5])
     return setup
 
 
@@ -550,10 +511,10 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     (depth and coverage, fresh each time) lives in it.
     ``n_bands`` defaults to one per thread (:func:`renderer.bands.raster_bands`);
     ``depth_test=False`` turns the z-buffer test off; ``cull_back=True`` drops back-facing triangles.
-    ``backs_last=True`` (with the depth test) draws each batch's back faces after its front
-    faces, skipping those a tile z-buffer shows hidden (:mod:`renderer.hidden_back_faces`),
-    in each batch whose triangles span :data:`~renderer.hidden_back_faces.BACKS_LAST_ROWS`
-    rows or more on average: the same buffer, quicker for closed surfaces seen from outside.
+    ``backs_last=True`` (with the depth test): in each batch whose triangles span
+    :data:`~renderer.hidden_back_faces.BACKS_LAST_ROWS` rows or more on average, the back
+    faces after the front faces (listed, :mod:`renderer.draw_lists`), skipping those a tile
+    z-buffer shows hidden: the same buffer, quicker for closed surfaces seen from outside.
     No triangles (a scene with nothing opaque): the clear buffer, :func:`clear_visibility`.
     """
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)
@@ -572,8 +533,10 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
             span = mean_rows(setup)  # chooses the kernel, the order and the next batch's test, never the pixels
             kernel = rasterize_walking if span >= TALL_ROWS else rasterize
             ends = (FIRST_BATCH if a == 0 else 0) | (LAST_BATCH if a + step >= count else 0)
-            kernel(setup, bands, rule, bool(depth_test), a, ends, depth, tri_index, covered,
-                   tiles if span >= BACKS_LAST_ROWS else NO_TILES)
+            behind = tiles if span >= BACKS_LAST_ROWS else NO_TILES
+            if behind is not NO_TILES:
+                list_by_facing(setup.rows, setup.front, setup.listed, setup.counts)
+            kernel(setup, bands, rule, bool(depth_test), a, ends, depth, tri_index, covered, behind)
     return Visibility(depth, tri_index, covered)
 
 

@@ -158,20 +158,23 @@ def test_the_pipeline_asks_for_back_faces_last_with_the_z_buffer_on(monkeypatch)
 def test_a_back_face_the_tiles_call_hidden_is_not_drawn(walking):
     """The raster kernels consult the tiles for back faces only: with tiles that (falsely) hold
     a depth nearer than any (−1) everywhere for this batch, every back face is skipped and
-    every front face drawn;
-    with no tiles (plain order) the back faces show."""
+    every front face drawn; with no tiles the back faces show. With tiles the kernels read
+    the triangles from their lists by facing (renderer/draw_lists.py), made first."""
     from renderer.bands import raster_bands
     from renderer.hidden_back_faces import NO_TILES, new_tiles
+    from renderer.draw_lists import list_by_facing
     from renderer.raster import FIRST_BATCH, LAST_BATCH, rasterize, rasterize_walking, set_up
 
     width, height = 70, 53
     fixed, window = soup(np.random.default_rng(3), 200, width, height)
     setup = set_up(fixed, window, height, False)
+    list_by_facing(setup.rows, setup.front, setup.listed, setup.counts)
     kernel = rasterize_walking if walking else rasterize
     shown = {}
     for case in ("plain", "lying tiles"):
         tiles = NO_TILES if case == "plain" else new_tiles(height, width)
-        tiles[0], tiles[1] = -1, 0  # every tile "worked out" for batch 0, nearer than any fragment
+        if tiles is not NO_TILES:
+            tiles[0], tiles[1] = -1, 0  # every tile "worked out" for batch 0, nearer than any fragment
         depth, tri_index = np.empty((height, width), np.int32), np.empty((height, width), np.int32)
         kernel(setup, raster_bands(height), 0, True, 0, FIRST_BATCH | LAST_BATCH, depth, tri_index,
                np.empty((height, width), np.bool_), tiles)

@@ -1,0 +1,95 @@
+"""A band's share of the opaque raster: which triangles it draws, in which order, and which
+blocks of their rows (:mod:`renderer.bands`).
+
+The raster's band kernels (:func:`renderer.raster.band_dividing`, ``band_walking``) each
+inline :func:`draw_band` with their own fill of a stretch of rows (``fill_stretch``):
+:func:`renderer.raster.fill_rows_dividing` or :func:`renderer.raster.fill_rows`. A band
+draws a batch
+
+- **in draw order** (:func:`draw_band_in_order`), every triangle with rows; or
+- **back faces last** (:func:`draw_band_listed`), with a tile z-buffer
+  (:mod:`renderer.hidden_back_faces`): the front faces, then the back faces, each from the
+  set-up's lists by facing (:mod:`renderer.draw_lists`), a back face's block of rows
+  skipped where the tiles show it hidden.
+
+Which of the two is decided as numba compiles a kernel, from the type of ``tiles``: None
+(:data:`renderer.hidden_back_faces.NO_TILES`) or an array. A kernel is compiled once for
+each, when a frame first needs it, and each holds one loop and one copy of the fill. The
+two loops in one kernel, chosen as it ran, compiled the fill twice and doubled a cold
+start (23–25 s against 9–11 s); one loop for both, reading the lists in either case, made
+every frame slower (1.10–1.28): docs/performance.md, "Back faces drawn last from lists by
+facing".
+
+Rows (``top``, ``bottom``, ``lo``, ``hi``) are window rows (y up), as everywhere in the raster.
+"""
+from __future__ import annotations
+
+from renderer.bands import first_block_of_band
+from renderer.draw_lists import BACKS, LIST_CHUNK, chunk_stretch, listed_triangle
+from renderer.hidden_back_faces import UNTESTED, fragment_depth_floor, hidden_in_tiles
+from renderer.jit import njit
+from renderer.min_max import larger, smaller
+
+
+@njit(cache=True, inline="always")
+def draw_band(b, setup, deal, rules, buffer, fill_stretch, tiles):
+    """Band ``b``'s share of a batch: every triangle drawn on its rows, a block of rows at a
+    time (``deal`` = (n_bands, block_rows): block j belongs to band j mod n_bands), each
+    block's rows ``top … bottom`` of triangle ``k`` filled by ``fill_stretch(k, top, bottom,
+    …)``, the kernel's own fill, inlined. ``rules`` = (rule, depth_test, first_index);
+    ``buffer`` = the visibility buffer's ``(depth, tri_index)``.
+
+    Without tiles (``tiles`` None, :data:`~renderer.hidden_back_faces.NO_TILES`), in draw
+    order (:func:`draw_band_in_order`); with a tile z-buffer, back faces last from the
+    set-up's lists (:func:`draw_band_listed`). The choice is made by numba as it compiles:
+    ``tiles is None`` is known from the argument's type, so each kernel is compiled once
+    for each kind of ``tiles`` it is called with, each time with one of the two loops and
+    one copy of the fill. (One kernel holding both loops compiled the fill twice: a cold
+    start took twice as long, docs/performance.md.)"""
+    if tiles is None:
+        draw_band_in_order(b, setup, deal, rules, buffer, fill_stretch)
+    else:
+        draw_band_listed(b, setup, deal, rules, buffer, fill_stretch, tiles)
+
+
+@njit(cache=True, inline="always")
+def draw_band_in_order(b, setup, deal, rules, buffer, fill_stretch):
+    """Band ``b``'s share of a batch in draw order: every triangle with rows drawn on the
+    band's (:func:`draw_on_band`)."""
+    for k in range(setup.ccw.shape[0]):
+        if setup.rows[k, 0] <= setup.rows[k, 1]:  # else no row of pixel centres, or nothing to draw
+            draw_on_band(k, b, setup, deal, rules, buffer, fill_stretch, UNTESTED, False)
+
+
+@njit(cache=True, inline="always")
+def draw_band_listed(b, setup, deal, rules, buffer, fill_stretch, tiles):
+    """Band ``b``'s share of a batch back faces last: from the set-up's lists
+    (:mod:`renderer.draw_lists`), the front faces, then the back faces, a back face's block
+    of rows skipped where the tile z-buffer ``tiles`` shows it hidden."""
+    for side in range(2):
+        for chunk in range(setup.counts.shape[0]):
+            stretch = chunk_stretch(chunk, LIST_CHUNK, setup.ccw.shape[0])
+            for j in range(setup.counts[chunk, side]):
+                k = listed_triangle(setup.listed, stretch, side, j)
+                draw_on_band(k, b, setup, deal, rules, buffer, fill_stretch, tiles, side == BACKS)
+
+
+@njit(cache=True, inline="always")
+def draw_on_band(k, b, setup, deal, rules, buffer, fill_stretch, tiles, behind_tiles):
+    """Triangle ``k``'s blocks of rows that belong to band ``b`` (``deal`` = (n_bands,
+    block_rows)), each filled by ``fill_stretch(k, top, bottom, setup, rule, depth_test,
+    first_index, depth, tri_index)`` (``rules`` = (rule, depth_test, first_index)); with
+    ``behind_tiles``, a block only where ``tiles`` do not show it hidden."""
+    n_bands, block_rows = deal
+    rule, depth_test, first_index = rules
+    depth, tri_index = buffer
+    lo, hi = setup.rows[k, 0], setup.rows[k, 1]
+    block = first_block_of_band(lo, b, n_bands, block_rows)
+    floor = -1  # worked out at the first block this band draws: most triangles have none here
+    while block * block_rows <= hi:
+        top, bottom = larger(lo, block * block_rows), smaller(hi, block * block_rows + block_rows - 1)
+        if behind_tiles and floor < 0:
+            floor = fragment_depth_floor(setup.ccw[k], setup.plane[k])
+        if not behind_tiles or not hidden_in_tiles(floor, setup.ccw[k], top, bottom, first_index, depth, tiles):
+            fill_stretch(k, top, bottom, setup, rule, depth_test, first_index, depth, tri_index)
+        block += n_bands
