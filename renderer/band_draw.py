@@ -2,9 +2,12 @@
 blocks of their rows (:mod:`renderer.bands`).
 
 The raster's band kernels (:func:`renderer.raster.band_dividing`, ``band_walking``) each
-inline :func:`draw_band` with their own fill of a stretch of rows (``fill_stretch``):
+inline one of the two loops below with their own fill of a stretch of rows
+(``fill_stretch(k, top, bottom, setup, rule, depth_test, first_index, depth, tri_index)``):
 :func:`renderer.raster.fill_rows_dividing` or :func:`renderer.raster.fill_rows`. A band
-draws a batch
+draws a batch, a block of rows at a time (``deal`` = (n_bands, block_rows): block j belongs
+to band j mod n_bands; ``rules`` = (rule, depth_test, first_index); ``buffer`` = the
+visibility buffer's ``(depth, tri_index)``),
 
 - **in draw order** (:func:`draw_band_in_order`), every triangle with rows; or
 - **back faces last** (:func:`draw_band_listed`), with a tile z-buffer
@@ -12,13 +15,17 @@ draws a batch
   set-up's lists by facing (:mod:`renderer.draw_lists`), a back face's block of rows
   skipped where the tiles show it hidden.
 
-Which of the two is decided as numba compiles a kernel, from the type of ``tiles``: None
-(:data:`renderer.hidden_back_faces.NO_TILES`) or an array. A kernel is compiled once for
-each, when a frame first needs it, and each holds one loop and one copy of the fill. The
-two loops in one kernel, chosen as it ran, compiled the fill twice and doubled a cold
-start (23–25 s against 9–11 s); one loop for both, reading the lists in either case, made
-every frame slower (1.10–1.28): docs/performance.md, "Back faces drawn last from lists by
-facing".
+Which of the two is decided as numba compiles a band kernel, from the type of its argument
+``tiles``: None (:data:`renderer.hidden_back_faces.NO_TILES`) or an array. A kernel is
+compiled once for each, when a frame first needs it, and each holds one loop and one copy
+of the fill. The choice is made in the kernel itself, on its own argument: numba drops a
+branch it can decide from the arguments' types before it inlines the functions called
+there, but a branch inside an inlined function only after inlining both. (With an inlined
+``draw_band`` holding the choice, the start-up scene's raster compiled in 11.4 s against 7.3
+for the kernel before; with the choice in the kernel, 7.2 and 7.6 s against 9.7 and 8.6.) The two loops in one kernel, chosen as it ran, compiled the fill twice and doubled a
+cold start (23–25 s against 9–11 s); one loop for both, reading the lists in either case,
+made every frame slower (1.10–1.28): docs/performance.md, "Back faces drawn last from lists
+by facing".
 
 Rows (``top``, ``bottom``, ``lo``, ``hi``) are window rows (y up), as everywhere in the raster.
 """
@@ -29,27 +36,6 @@ from renderer.draw_lists import BACKS, LIST_CHUNK, chunk_stretch, listed_triangl
 from renderer.hidden_back_faces import UNTESTED, fragment_depth_floor, hidden_in_tiles
 from renderer.jit import njit
 from renderer.min_max import larger, smaller
-
-
-@njit(cache=True, inline="always")
-def draw_band(b, setup, deal, rules, buffer, fill_stretch, tiles):
-    """Band ``b``'s share of a batch: every triangle drawn on its rows, a block of rows at a
-    time (``deal`` = (n_bands, block_rows): block j belongs to band j mod n_bands), each
-    block's rows ``top … bottom`` of triangle ``k`` filled by ``fill_stretch(k, top, bottom,
-    …)``, the kernel's own fill, inlined. ``rules`` = (rule, depth_test, first_index);
-    ``buffer`` = the visibility buffer's ``(depth, tri_index)``.
-
-    Without tiles (``tiles`` None, :data:`~renderer.hidden_back_faces.NO_TILES`), in draw
-    order (:func:`draw_band_in_order`); with a tile z-buffer, back faces last from the
-    set-up's lists (:func:`draw_band_listed`). The choice is made by numba as it compiles:
-    ``tiles is None`` is known from the argument's type, so each kernel is compiled once
-    for each kind of ``tiles`` it is called with, each time with one of the two loops and
-    one copy of the fill. (One kernel holding both loops compiled the fill twice: a cold
-    start took twice as long, docs/performance.md.)"""
-    if tiles is None:
-        draw_band_in_order(b, setup, deal, rules, buffer, fill_stretch)
-    else:
-        draw_band_listed(b, setup, deal, rules, buffer, fill_stretch, tiles)
 
 
 @njit(cache=True, inline="always")

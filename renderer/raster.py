@@ -50,7 +50,7 @@ from renderer.clip import CornerIndex, corner_row
 from renderer.bands import BLOCK_ROWS, one_band_at_a_time, raster_bands
 from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibility, clear_band, clear_visibility,
                                         depth_bits, depth_to_window, fill_columns, finish_band)
-from renderer.band_draw import draw_band
+from renderer.band_draw import draw_band_in_order, draw_band_listed
 from renderer.draw_lists import LIST_CHUNK, list_by_facing
 from renderer.edge_functions import fill_narrow_rows, lanes_start
 from renderer.edge_walk import edge_walk, fill_walked, split_at_middle
@@ -355,9 +355,10 @@ def fill_span(k, row, first, last, setup, depth_test, first_index, depth, tri_in
 def band_dividing(b, setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, tiles):
     """Band ``b``'s whole share of :func:`rasterize`: its rows cleared for the first batch
     (``ends`` has :data:`FIRST_BATCH`, :func:`clear_band`), then every triangle drawn on them
-    (:func:`renderer.band_draw.draw_band` with :func:`fill_rows_dividing`), in blocks of
-    :data:`renderer.bands.BLOCK_ROWS` rows: in draw order when ``tiles`` is None, else back
-    faces last behind the tile z-buffer ``tiles``; numba compiles the kernel apart for each.
+    with :func:`fill_rows_dividing`, in blocks of :data:`renderer.bands.BLOCK_ROWS` rows: in
+    draw order when ``tiles`` is None, else back faces last behind the tile z-buffer
+    ``tiles``. Numba compiles the kernel apart for each, with one of the two loops
+    (:mod:`renderer.band_draw`: why the choice is made here, not in an inlined function).
 
     A kernel of its own, called from the parallel loop rather than inlined into it: numba's
     parallel passes then analyse a one-line loop body, not the whole fill (measured, a cold
@@ -368,8 +369,11 @@ def band_dividing(b, setup, n_bands, rule, depth_test, first_index, ends, depth,
     (menger3, 512², one thread, 12.8–13.3 → 13.8–14.0 ms; without the counts 12.7–13.0)."""
     if ends & FIRST_BATCH:
         clear_band(b, n_bands, BLOCK_ROWS, depth, tri_index)
-    draw_band(b, setup, (n_bands, BLOCK_ROWS), (rule, depth_test, first_index), (depth, tri_index),
-              fill_rows_dividing, tiles)
+    deal, rules, buffer = (n_bands, BLOCK_ROWS), (rule, depth_test, first_index), (depth, tri_index)
+    if tiles is None:  # known from the type of ``tiles`` as numba compiles: one branch is compiled
+        draw_band_in_order(b, setup, deal, rules, buffer, fill_rows_dividing)
+    else:
+        draw_band_listed(b, setup, deal, rules, buffer, fill_rows_dividing, tiles)
 
 
 @njit(cache=True, from_python=False, refcounts=False)
@@ -378,8 +382,11 @@ def band_walking(b, setup, n_bands, rule, depth_test, first_index, ends, depth, 
     rows, the spans found by walking the edges (:func:`fill_rows`)."""
     if ends & FIRST_BATCH:
         clear_band(b, n_bands, WALK_BLOCK_ROWS, depth, tri_index)
-    draw_band(b, setup, (n_bands, WALK_BLOCK_ROWS), (rule, depth_test, first_index), (depth, tri_index), fill_rows,
-              tiles)
+    deal, rules, buffer = (n_bands, WALK_BLOCK_ROWS), (rule, depth_test, first_index), (depth, tri_index)
+    if tiles is None:  # as in :func:`band_dividing`
+        draw_band_in_order(b, setup, deal, rules, buffer, fill_rows)
+    else:
+        draw_band_listed(b, setup, deal, rules, buffer, fill_rows, tiles)
 
 
 FIRST_BATCH, LAST_BATCH = 1, 2
@@ -398,7 +405,7 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_in
     first batch: ``ends`` has :data:`FIRST_BATCH`). A pixel belongs to one band and sees the
     triangles in draw order, so the result is the same, bit for bit, as a serial loop
     (z-buffer ties included), also with a tile z-buffer ``tiles``: back faces last
-    (:func:`renderer.band_draw.draw_band`). After the last batch (:data:`LAST_BATCH`) each band writes its rows'
+    (:mod:`renderer.band_draw`). After the last batch (:data:`LAST_BATCH`) each band writes its rows'
     coverage into ``covered`` (H, W) bool (:func:`renderer.visibility_buffer.finish_band`).
     ``depth_test`` False draws every fragment over what is there (the painter's algorithm, or no hidden-surface removal
     at all): then the last triangle drawn wins.

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from renderer.band_draw import draw_band
+from renderer.band_draw import draw_band_in_order, draw_band_listed
 from renderer.bands import BLOCK_ROWS
 from renderer.draw_lists import list_by_facing
 from renderer.hidden_back_faces import NO_TILES, new_tiles
@@ -33,8 +33,13 @@ def log_stretch(k, top, bottom, setup, rule, depth_test, first_index, depth, log
 
 @njit(cache=False)
 def band_log(b, n_bands, setup, tiles, depth, log):
+    """Band ``b``'s stretches, chosen as the raster's band kernels choose (on ``tiles is None``)."""
     log[0, 0] = 0
-    draw_band(b, setup, (n_bands, BLOCK_ROWS), (0, True, 0), (depth, log), log_stretch, tiles)
+    deal, rules, buffer = (n_bands, BLOCK_ROWS), (0, True, 0), (depth, log)
+    if tiles is None:
+        draw_band_in_order(b, setup, deal, rules, buffer, log_stretch)
+    else:
+        draw_band_listed(b, setup, deal, rules, buffer, log_stretch, tiles)
     return log[1:log[0, 0] + 1].copy()
 
 
@@ -92,13 +97,18 @@ def test_tiles_nearer_than_every_fragment_hide_every_back_face_and_no_front_face
         assert got == blocks_of(setup, np.flatnonzero(drawn & setup.front), b, 2)
 
 
-def test_a_band_kernel_is_compiled_apart_for_no_tiles_and_for_tiles(batch):
-    """The choice of loop is numba's, from the type of ``tiles``: two compiled versions of
-    the kernel, one for None and one for the array, each made when first called."""
-    setup, _ = batch
-    tiles = new_tiles(HEIGHT, WIDTH)
-    tiles[0], tiles[1] = 1 << 24, 0
-    run(setup, NO_TILES, 1)
-    run(setup, tiles, 1)
-    kinds = sorted(str(sig[3]) for sig in band_log.signatures)
+@pytest.mark.parametrize("walking", [False, True])
+def test_the_raster_s_band_kernels_are_compiled_apart_for_no_tiles_and_for_tiles(monkeypatch, walking):
+    """The choice of loop is numba's, from the type of ``tiles``: a frame drawn in order and
+    one drawn back faces last leave each band kernel with two compiled versions, one for
+    None and one for the tile z-buffer."""
+    from renderer import raster
+
+    monkeypatch.setattr(raster, "TALL_ROWS", 0 if walking else 10**9)
+    monkeypatch.setattr(raster, "BACKS_LAST_ROWS", 0)
+    fixed, window = soup(np.random.default_rng(5), 300, WIDTH, HEIGHT)
+    for backs_last in (False, True):
+        raster.rasterize_visibility(raster.whole_triangles(fixed, window), WIDTH, HEIGHT, backs_last=backs_last)
+    kernel = raster.band_walking if walking else raster.band_dividing
+    kinds = sorted(str(sig[-1]) for sig in kernel.signatures)
     assert len(kinds) == 2 and kinds[1] == "none" and kinds[0].startswith("array(int32, 3d")
