@@ -100,8 +100,10 @@ def test_tiles_nearer_than_every_fragment_hide_every_back_face_and_no_front_face
 @pytest.mark.parametrize("walking", [False, True])
 def test_the_raster_s_band_kernels_are_compiled_apart_for_no_tiles_and_for_tiles(monkeypatch, walking):
     """The choice of loop is numba's, from the type of ``tiles``: a frame drawn in order and
-    one drawn back faces last leave each band kernel with two compiled versions, one for
-    None and one for the tile z-buffer."""
+    one drawn back faces last leave the raster kernel with two compiled versions, one for
+    None and one for the tile z-buffer, and so its band kernel too. (The parallel kernel's
+    versions are asked for: a band kernel's are listed only where it was compiled in this
+    process, not where its caller came from the kernel cache.)"""
     from renderer import raster
 
     monkeypatch.setattr(raster, "TALL_ROWS", 0 if walking else 10**9)
@@ -109,6 +111,6 @@ def test_the_raster_s_band_kernels_are_compiled_apart_for_no_tiles_and_for_tiles
     fixed, window = soup(np.random.default_rng(5), 300, WIDTH, HEIGHT)
     for backs_last in (False, True):
         raster.rasterize_visibility(raster.whole_triangles(fixed, window), WIDTH, HEIGHT, backs_last=backs_last)
-    kernel = raster.band_walking if walking else raster.band_dividing
+    kernel = raster.rasterize_walking if walking else raster.rasterize
     kinds = sorted(str(sig[-1]) for sig in kernel.signatures)
     assert len(kinds) == 2 and kinds[1] == "none" and kinds[0].startswith("array(int32, 3d")
