@@ -58,7 +58,6 @@ alternating in one process (20 pairs), from 4 rows / from 8: ico7 at 1024² (4.9
 flat and 0.98 phong, but the level-4 sponge at 1024² (5–6 rows, its holes keep the tiles
 deep) 1.11, the Igea scan 0.99."""
 
-
 NO_BATCH = -1
 """The mark of a tile worked out for no batch yet (batches are marked with their first
 triangle's number, ≥ 0)."""
