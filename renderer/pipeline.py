@@ -188,7 +188,8 @@ def clip_and_map(geo: SceneGeometry, width: int, height: int, ws=None, trivial: 
     window = empty(ws, "window.window", (n + 3 * p, 3))
     fixed = empty(ws, "window.fixed", (n + 3 * p, 2), np.int64)
     window_into(geo.verts_clip, width, height, window[:n], fixed[:n])
-    window_into(clipped.piece_clip.reshape(-1, 4), width, height, window[n:], fixed[n:])
+    if p:  # no pieces, no parallel loop to start
+        window_into(clipped.piece_clip.reshape(-1, 4), width, height, window[n:], fixed[n:])
     return ClippedMesh(clipped.source, clipped.piece, clipped, geo, window, fixed)
 
 

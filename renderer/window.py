@@ -12,7 +12,7 @@ The flip from window rows (y up) to image rows (row 0 at the top) happens in one
 from __future__ import annotations
 
 import numpy as np
-from renderer.jit import njit
+from renderer.jit import njit, prange
 
 from renderer.workspace import empty
 
@@ -37,10 +37,14 @@ def clip_to_window(tri_clip, width, height, ws=None, name="window.mapped"):
     return window, fixed
 
 
-@njit(cache=True)
+@njit(cache=True, parallel=True)
 def window_into(points_clip, width, height, window, fixed):
-    """The loop kernel of :func:`clip_to_window`, point by point: (M, 4) → (M, 3), (M, 2)."""
-    for i in range(points_clip.shape[0]):
+    """The loop kernel of :func:`clip_to_window`, point by point: (M, 4) → (M, 3), (M, 2).
+    Each point on its own, so a parallel loop gives the same bits on any number of threads.
+    Serial, it was 5 % of a frame of the 1M-triangle scan at 512²; measured, the kernel alone
+    on a frame's vertices, two threads against one: its 537k vertices 1.09 against 2.13 ms,
+    the level-4 Menger sponge's 284k 0.57 against 1.10."""
+    for i in prange(points_clip.shape[0]):
         w = points_clip[i, 3]
         x = (points_clip[i, 0] / w + 1.0) * (width / 2.0)
         y = (points_clip[i, 1] / w + 1.0) * (height / 2.0)

@@ -44,7 +44,7 @@ def test_numbering_puts_back_the_zeros_it_was_given_so_a_workspace_table_serves_
     """:func:`number_in_sight` is handed an all-zero table and leaves it all zero; frames of
     other buffers through one workspace are numbered as each would be alone."""
     rng = np.random.default_rng(7)
-    number, ids = np.zeros(300, np.int64), np.empty(300, np.int64)
+    number, ids = np.zeros(300, np.int32), np.empty(300, np.int64)
     tri_index = rng.integers(-1, 300, (20, 30)).astype(np.int32)
     assert number_in_sight(tri_index, number, ids) > 0
     assert not number.any()

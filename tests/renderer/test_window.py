@@ -1,8 +1,12 @@
 """Stage 5, clip → window: perspective division, the viewport (y up), 1/256-pixel snapping and the one y flip."""
+import contextlib
+
 import numpy as np
 import pytest
 
 from renderer.window import SUBPIXEL, clip_to_window, window_rows_to_image_rows
+
+from .single_thread import one_thread
 
 W, H = 8, 4  # powers of two: every window position below is exact in binary
 
@@ -68,3 +72,21 @@ def test_image_rows_are_window_rows_upside_down():
     image = window_rows_to_image_rows(window_rows)
     assert image.shape == (H, W)
     np.testing.assert_array_equal(image[:, 0], [H - 1 - r for r in range(H)])
+
+
+def test_many_points_map_to_the_same_bits_on_one_thread_and_on_two():
+    """The window mapping runs as a parallel loop over the points: each point on its own, so
+    the bits are those of the formula, point by point, on any number of threads."""
+    from renderer.window import window_into
+
+    rng = np.random.default_rng(5)
+    points = np.column_stack([rng.uniform(-2, 2, (100_000, 3)), rng.uniform(0.5, 3, 100_000)])
+    w = points[:, 3]
+    x, y = (points[:, 0] / w + 1.0) * (640 / 2.0), (points[:, 1] / w + 1.0) * (480 / 2.0)
+    expected_fixed = np.column_stack([np.rint((x - 0.5) * SUBPIXEL), np.rint((y - 0.5) * SUBPIXEL)]).astype(np.int64)
+    for threads in (one_thread, contextlib.nullcontext):
+        window, fixed = np.empty((100_000, 3)), np.empty((100_000, 2), np.int64)
+        with threads():
+            window_into(points, 640, 480, window, fixed)
+        np.testing.assert_array_equal(window, np.column_stack([x, y, (points[:, 2] / w + 1.0) / 2.0]))
+        np.testing.assert_array_equal(fixed, expected_fixed)
