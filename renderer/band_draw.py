@@ -22,10 +22,11 @@ of the fill. The choice is made in the kernel itself, on its own argument: numba
 branch it can decide from the arguments' types before it inlines the functions called
 there, but a branch inside an inlined function only after inlining both. (With an inlined
 ``draw_band`` holding the choice, the start-up scene's raster compiled in 11.4 s against 7.3
-for the kernel before; with the choice in the kernel, 7.2 and 7.6 s against 9.7 and 8.6.) The two loops in one kernel, chosen as it ran, compiled the fill twice and doubled a
-cold start (23–25 s against 9–11 s); one loop for both, reading the lists in either case,
-made every frame slower (1.10–1.28): docs/performance.md, "Back faces drawn last from lists
-by facing".
+for the kernel before; with the choice in the kernel, 7.2 and 7.6 s against 9.7 and 8.6.)
+The two loops in one kernel, chosen as it ran, compiled the fill twice and doubled a cold
+start (23–25 s against 9–11 s); one loop for both, reading the lists in either case, made
+every frame slower (1.10–1.28): docs/performance.md, "Back faces drawn last from lists by
+facing".
 
 Rows (``top``, ``bottom``, ``lo``, ``hi``) are window rows (y up), as everywhere in the raster.
 """

@@ -4,7 +4,7 @@ import contextlib
 import numpy as np
 import pytest
 
-from renderer.window import SUBPIXEL, clip_to_window, window_rows_to_image_rows
+from renderer.window import SUBPIXEL, clip_to_window, window_into, window_rows_to_image_rows
 
 from .single_thread import one_thread
 
@@ -77,8 +77,6 @@ def test_image_rows_are_window_rows_upside_down():
 def test_many_points_map_to_the_same_bits_on_one_thread_and_on_two():
     """The window mapping runs as a parallel loop over the points: each point on its own, so
     the bits are those of the formula, point by point, on any number of threads."""
-    from renderer.window import window_into
-
     rng = np.random.default_rng(5)
     points = np.column_stack([rng.uniform(-2, 2, (100_000, 3)), rng.uniform(0.5, 3, 100_000)])
     w = points[:, 3]
