@@ -19,8 +19,9 @@ import numpy as np
 from renderer.jit import njit
 from renderer.min_max import larger, smaller
 
+from renderer.fill_rules import FILL_RULES
 from renderer.pixel_centres import ceil_div
-from renderer.raster import FILL_RULES, scanline_span
+from renderer.raster import scanline_span
 from renderer.window import SUBPIXEL, signed_area_fixed
 
 

@@ -54,13 +54,11 @@ from renderer.band_draw import draw_band_in_order, draw_band_listed
 from renderer.draw_lists import LIST_CHUNK, list_by_facing
 from renderer.edge_functions import fill_narrow_rows, lanes_start
 from renderer.edge_walk import edge_walk, fill_walked, split_at_middle
+from renderer.fill_rules import FILL_RULES, TOP_LEFT
 from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, new_tiles
 from renderer.pixel_centres import LONE_ROWS, ceil_div, centre_rows
 from renderer.window import SUBPIXEL, signed_area_corners, window_edges
 from renderer.workspace import empty
-
-TOP_LEFT, BOTTOM_RIGHT = 0, 1  # fill rules; BOTTOM_RIGHT exists to show what a wrong rule does
-FILL_RULES = {"top-left": TOP_LEFT, "bottom-right": BOTTOM_RIGHT}
 
 
 class TriangleSetup(NamedTuple):

@@ -47,7 +47,8 @@ from renderer.fragment_spans import batch_points, light_batch, lit_in_batches, s
 from renderer.oit_buffers import (F32_ONE, OIT_VALUES, add_run_to_oit, clear_oit_strip, mul8, oit_add, oit_resolve,
                                   resolve_oit_row, resolve_scratch)
 from renderer.edge_walk import edge_walk, split_at_middle, walk_on, walked_columns
-from renderer.raster import DEPTH_CLEAR, FILL_RULES, TOP_LEFT, WALK_ROWS, pixel_depth, row_depth, row_span, set_up
+from renderer.fill_rules import FILL_RULES, TOP_LEFT
+from renderer.raster import DEPTH_CLEAR, WALK_ROWS, pixel_depth, row_depth, row_span, set_up
 from renderer.reflection.materials import PIXEL_FACE_NORMAL
 from renderer.shading import ShadingInputs, fragments, span_scratch, unorm8, with_span_table
 from renderer.spans import LANES, whole_lanes

@@ -11,8 +11,9 @@ import numpy as np
 import pytest
 
 from renderer.edge_functions import fill_narrow_rows, lanes_start, owns_ties
+from renderer.fill_rules import FILL_RULES, TOP_LEFT
 from renderer.jit import njit
-from renderer.raster import DEPTH_CLEAR, EMPTY, FILL_RULES, TOP_LEFT, fill_row, set_up
+from renderer.raster import DEPTH_CLEAR, EMPTY, fill_row, set_up
 from renderer.spans import LANES
 from renderer.window import SUBPIXEL
 

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from renderer.edge_walk import column_bound, edge_walk, split_at_middle, walk_on, walked_columns
-from renderer.raster import FILL_RULES, row_span
+from renderer.fill_rules import FILL_RULES
+from renderer.raster import row_span
 from renderer.window import SUBPIXEL
 
 

@@ -547,7 +547,8 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     depth and triangle at every pixel. mean_rows sends the tall batch to the walking kernel."""
     from renderer.bands import raster_bands
     from renderer.hidden_back_faces import NO_TILES
-    from renderer.raster import (DEPTH_CLEAR, EMPTY, FILL_RULES, FIRST_BATCH, LAST_BATCH, TALL_ROWS, mean_rows, rasterize,
+    from renderer.fill_rules import FILL_RULES
+    from renderer.raster import (DEPTH_CLEAR, EMPTY, FIRST_BATCH, LAST_BATCH, TALL_ROWS, mean_rows, rasterize,
                                  rasterize_walking, set_up)
     width, height = 37, 90
     rng = np.random.default_rng(5)
