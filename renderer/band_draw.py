@@ -32,20 +32,47 @@ Rows (``top``, ``bottom``, ``lo``, ``hi``) are window rows (y up), as everywhere
 """
 from __future__ import annotations
 
+import numpy as np
+
 from renderer.bands import first_block_of_band
 from renderer.draw_lists import BACKS, LIST_CHUNK, chunk_stretch, listed_triangle
+from renderer.fill_rules import TOP_LEFT
 from renderer.hidden_back_faces import UNTESTED, fragment_depth_floor, hidden_in_tiles
 from renderer.jit import njit
 from renderer.min_max import larger, smaller
+from renderer.one_pixel import NOT_ONE_COLUMN, OUTSIDE_IMAGE, fill_one_centre, one_column
 
 
 @njit(cache=True, inline="always")
-def draw_band_in_order(b, setup, deal, rules, buffer, fill_stretch):
+def draw_band_in_order(b, setup, deal, rules, buffer, fill_stretch, one_pixel=False):
     """Band ``b``'s share of a batch in draw order: every triangle with rows drawn on the
-    band's (:func:`draw_on_band`)."""
+    band's (:func:`draw_on_band`). With ``one_pixel`` (a batch finer than the pixels), a
+    triangle whose box holds one pixel centre is tested at that centre alone
+    (:func:`draw_one_pixel`), not filled by ``fill_stretch``: the same pixels."""
     for k in range(setup.ccw.shape[0]):
         if setup.rows[k, 0] <= setup.rows[k, 1]:  # else no row of pixel centres, or nothing to draw
-            draw_on_band(k, b, setup, deal, rules, buffer, fill_stretch, UNTESTED, False)
+            if not (one_pixel and draw_one_pixel(k, b, setup, deal, rules, buffer)):
+                draw_on_band(k, b, setup, deal, rules, buffer, fill_stretch, UNTESTED, False)
+
+
+@njit(cache=True, inline="always")
+def draw_one_pixel(k, b, setup, deal, rules, buffer):
+    """Triangle ``k`` when its box holds one pixel centre (one row, :func:`renderer.one_pixel.one_column`):
+    that centre drawn by :func:`renderer.one_pixel.fill_one_centre` if its row is band ``b``'s
+    (``deal`` = (n_bands, block_rows)), and True; False for a triangle of more centres, left to
+    the band's fill."""
+    lo = setup.rows[k, 0]
+    if lo != setup.rows[k, 1]:
+        return False
+    col = one_column(setup.ccw[k], buffer[0].shape[1])
+    if col == NOT_ONE_COLUMN:
+        return False
+    n_bands, block_rows = deal
+    if col != OUTSIDE_IMAGE and first_block_of_band(lo, b, n_bands, block_rows) * block_rows <= lo:
+        rule, depth_test, first_index = rules
+        fill_one_centre(setup.ccw[k], lo, col, setup.plane[k], np.int32(first_index + k), rule == TOP_LEFT,
+                        depth_test, buffer[0], buffer[1])
+    return True
 
 
 @njit(cache=True, inline="always")

@@ -369,7 +369,7 @@ def band_dividing(b, setup, n_bands, rule, depth_test, first_index, ends, depth,
         clear_band(b, n_bands, BLOCK_ROWS, depth, tri_index)
     deal, rules, buffer = (n_bands, BLOCK_ROWS), (rule, depth_test, first_index), (depth, tri_index)
     if tiles is None:  # known from the type of ``tiles`` as numba compiles: one branch is compiled
-        draw_band_in_order(b, setup, deal, rules, buffer, fill_rows_dividing)
+        draw_band_in_order(b, setup, deal, rules, buffer, fill_rows_dividing, ends & FINE_BATCH != 0)
     else:
         draw_band_listed(b, setup, deal, rules, buffer, fill_rows_dividing, tiles)
 
@@ -387,10 +387,13 @@ def band_walking(b, setup, n_bands, rule, depth_test, first_index, ends, depth, 
         draw_band_listed(b, setup, deal, rules, buffer, fill_rows, tiles)
 
 
-FIRST_BATCH, LAST_BATCH = 1, 2
+FIRST_BATCH, LAST_BATCH, FINE_BATCH = 1, 2, 4
 """Bits of :func:`rasterize`'s ``ends``: the batch of triangles is the first (each band clears
 its rows before drawing, :func:`clear_band`), the last (each band then writes its rows'
-window depth and coverage, :func:`finish_band`), or both."""
+window depth and coverage, :func:`finish_band`), or both; and, apart from where the batch
+lies, it is finer than the pixels (:data:`renderer.pixel_centres.LONE_ROWS`): a triangle
+whose box holds one pixel centre is tested at that centre alone (:mod:`renderer.one_pixel`,
+in draw order only; the walking kernel's batches are never fine)."""
 
 
 @njit(cache=True, parallel=True)
@@ -537,7 +540,8 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
         with one_band_at_a_time():
             span = mean_rows(setup)  # chooses the kernel, the order and the next batch's test, never the pixels
             kernel = rasterize_walking if span >= TALL_ROWS else rasterize
-            ends = (FIRST_BATCH if a == 0 else 0) | (LAST_BATCH if a + step >= count else 0)
+            ends = ((FIRST_BATCH if a == 0 else 0) | (LAST_BATCH if a + step >= count else 0)
+                    | (FINE_BATCH if span < LONE_ROWS else 0))
             behind = tiles if span >= BACKS_LAST_ROWS else NO_TILES
             if behind is not NO_TILES:
                 list_by_facing(setup.rows, setup.front, setup.listed, setup.counts)
