@@ -27,7 +27,9 @@ lean path, the order the rows first show them: :mod:`renderer.visible`), into :c
 triangle → source triangle → its vertices → their positions and normals), each of which
 missed the cache on a large mesh, where a triangle has one or two spans. The values are
 the same bits as working them out span by span (the same float64 expressions, the same
-casts to float32).
+casts to float32); read from the clipped corners (:func:`span_table_of_corners`), a
+triangle kept whole takes its vertices' values without mixing them by weights of 1 and 0:
+the same numbers, up to the sign of a zero.
 """
 from __future__ import annotations
 
@@ -79,7 +81,8 @@ def span_table(plane, front, tri_clip, clip_bary, clip_source, perspective, geo,
         mix = ((clip_bary[k, 0, 0], clip_bary[k, 0, 1], clip_bary[k, 0, 2]),
                (clip_bary[k, 1, 0], clip_bary[k, 1, 1], clip_bary[k, 1, 2]),
                (clip_bary[k, 2, 0], clip_bary[k, 2, 1], clip_bary[k, 2, 2]))
-        table_row(k, clip_source[k], edges, w, mix, front[k], geo, weights, corners, objects)
+        table_row(k, clip_source[k], edges, w, front[k], geo, weights, corners, objects)
+        mixed_corners(k, clip_source[k], mix, geo, corners)
 
 
 class CornerTables(NamedTuple):
@@ -108,8 +111,9 @@ def span_table_of_corners(clipped, perspective, geo, weights, corners, objects):
     weights' plane and facing from its corners' window rows (as
     :func:`renderer.raster.weight_planes` works them out), its corners' clip w and weights
     from the scene's vertices (unit weights) or its piece (as
-    :func:`renderer.clip.gather_corners` writes them out) — the same bits, without writing
-    those tables out and reading them back (a 270k-triangle scan at 512²: 6 ms a frame). The
+    :func:`renderer.clip.gather_corners` writes them out) — the same bits (a triangle kept
+    whole: its vertices' values, :func:`source_corners`), without writing those tables out
+    and reading them back (a 270k-triangle scan at 512²: 6 ms a frame). The
     rows of the triangles a few iterations on are asked for ahead (:func:`read_ahead`)."""
     fixed, count = clipped.fixed, clipped.source.shape[0]
     for k in prange(count):
@@ -118,14 +122,15 @@ def span_table_of_corners(clipped, perspective, geo, weights, corners, objects):
         s, p = clipped.source[k], clipped.piece[k]
         if p < 0:  # kept whole: its corner rows are its vertices
             w = (clipped.verts_clip[i0, 3], clipped.verts_clip[i1, 3], clipped.verts_clip[i2, 3])
-            mix = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+            source_corners(k, s, geo, corners)
         else:
             c, b = clipped.piece_clip, clipped.piece_bary
             w = (c[p, 0, 3], c[p, 1, 3], c[p, 2, 3])
             mix = ((b[p, 0, 0], b[p, 0, 1], b[p, 0, 2]), (b[p, 1, 0], b[p, 1, 1], b[p, 1, 2]),
                    (b[p, 2, 0], b[p, 2, 1], b[p, 2, 2]))
+            mixed_corners(k, s, mix, geo, corners)
         edges, front = window_edges(clipped.window, i0, i1, i2), signed_area_corners(fixed, i0, i1, i2) > 0
-        table_row(k, s, edges, w if perspective else (1.0, 1.0, 1.0), mix, front, geo, weights, corners, objects)
+        table_row(k, s, edges, w if perspective else (1.0, 1.0, 1.0), front, geo, weights, corners, objects)
 
 
 AHEAD_SOURCE, AHEAD_CORNERS = 16, 8
@@ -161,33 +166,57 @@ def read_ahead(k, count, clipped, geo):
 
 
 @njit(cache=True, inline="always")
-def table_row(k, s, edges, w, mix, front, geo, weights, corners, objects):
+def table_row(k, s, edges, w, front, geo, weights, corners, objects):
     """Row ``k`` of the span table (``weights``, ``corners``, ``objects``) for a clipped triangle
-    of source triangle ``s``: ``edges`` its weights' plane (x0, y0, e1x, e1y, e2x, e2y,
+    of source triangle ``s``, but for its corners' values (:func:`source_corners`,
+    :func:`mixed_corners`): ``edges`` its weights' plane (x0, y0, e1x, e1y, e2x, e2y,
     :func:`renderer.raster.weights_plane`), ``w`` its corners' clip w (1 when screen-linear),
-    ``mix`` each corner's weights in the source triangle, ``front`` its facing. (The tables
-    come one by one, not as a tuple: numba loses writes made through a tuple's arrays inside
-    ``prange``, numba issues #5872, #7135.)"""
+    ``front`` its facing. (The tables come one by one, not as a tuple: numba loses writes made
+    through a tuple's arrays inside ``prange``, numba issues #5872, #7135.)"""
     x0, y0, e1x, e1y, e2x, e2y = edges
     anchor = np.floor(x0)
     weights[k, 0], weights[k, 1], weights[k, 2] = anchor, anchor + 0.5 - x0, y0
     weights[k, 3], weights[k, 4], weights[k, 5], weights[k, 6] = e1x, e1y, e2x, e2y
     weights[k, 7] = 1.0 / (e1x * e2y - e2x * e1y)
     weights[k, 8], weights[k, 9], weights[k, 10] = 1.0 / w[0], 1.0 / w[1], 1.0 / w[2]
+    fx, fy, fz = face_toward_viewer(geo, s) if geo.face_normals.shape[0] > 0 else (0.0, 0.0, 0.0)
+    corners[k, 18], corners[k, 19], corners[k, 20] = np.float32(fx), np.float32(fy), np.float32(fz)
+    corners[k, 21] = F1 if front else -F1
+    objects[k] = geo.tri_object[s]
+
+
+@njit(cache=True, inline="always")
+def mixed_corners(k, s, mix, geo, corners):
+    """The corners' values in row ``k`` of the span table's ``corners``: positions, normals and,
+    in a textured frame, texture coordinates of source triangle ``s``'s vertices mixed by each
+    corner's weights ``mix`` (three rows of three, :func:`mixed_vertex`)."""
     i0, i1, i2 = geo.triangles[s, 0], geo.triangles[s, 1], geo.triangles[s, 2]
     for i in range(3):
         p = mixed_vertex(geo.verts_view, mix[i], i0, i1, i2)
         n = mixed_vertex(geo.normals_view, mix[i], i0, i1, i2)
         for c in range(3):
             corners[k, 3 * i + c], corners[k, 9 + 3 * i + c] = p[c], n[c]
-    fx, fy, fz = face_toward_viewer(geo, s) if geo.face_normals.shape[0] > 0 else (0.0, 0.0, 0.0)
-    corners[k, 18], corners[k, 19], corners[k, 20] = np.float32(fx), np.float32(fy), np.float32(fz)
-    corners[k, 21] = F1 if front else -F1
     if corners.shape[1] == TEXTURED_CORNERS:
         for i in range(3):
             st = mixed_vertex(geo.tcoords, mix[i], i0, i1, i2)
             corners[k, 22 + 2 * i], corners[k, 23 + 2 * i] = st[0], st[1]
-    objects[k] = geo.tri_object[s]
+
+
+@njit(cache=True, inline="always")
+def source_corners(k, s, geo, corners):
+    """:func:`mixed_corners` of a triangle kept whole, whose corners are source triangle ``s``'s
+    vertices: their values as they are, as float32 (:func:`vertex_values`), without the mix's
+    products by weights of 1 and 0, which give the same numbers up to the sign of a zero (the
+    span table alone: 0.82–0.89 of its time, docs/performance.md)."""
+    for i in range(3):
+        v = geo.triangles[s, i]
+        p, n = vertex_values(geo.verts_view, v), vertex_values(geo.normals_view, v)
+        for c in range(3):
+            corners[k, 3 * i + c], corners[k, 9 + 3 * i + c] = p[c], n[c]
+    if corners.shape[1] == TEXTURED_CORNERS:
+        for i in range(3):
+            st = vertex_values(geo.tcoords, geo.triangles[s, i])
+            corners[k, 22 + 2 * i], corners[k, 23 + 2 * i] = st[0], st[1]
 
 
 @njit(cache=True, inline="always")
@@ -224,6 +253,15 @@ def mixed_vertex(values, mix, i0, i1, i2):
     if values.shape[1] == 2:
         return s0, s1, F0
     return s0, s1, np.float32(w0 * values[i0, 2] + w1 * values[i1, 2] + w2 * values[i2, 2])
+
+
+@njit(cache=True, inline="always")
+def vertex_values(values, i):
+    """Row ``i`` of ``values`` (per source vertex, 3 columns; or 2, texture coordinates, then a
+    third 0) as float32: a corner that is that vertex (:func:`source_corners`)."""
+    if values.shape[1] == 2:
+        return np.float32(values[i, 0]), np.float32(values[i, 1]), F0
+    return np.float32(values[i, 0]), np.float32(values[i, 1]), np.float32(values[i, 2])
 
 
 @njit(cache=True, inline="always")

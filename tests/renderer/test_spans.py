@@ -193,6 +193,32 @@ def test_the_span_table_read_from_the_clipped_corners_is_the_one_the_written_out
         assert getattr(direct, name).tobytes() == getattr(written, name).tobytes(), name
 
 
+def test_a_triangle_kept_whole_takes_its_vertices_values_as_they_are(monkeypatch):
+    """Read from the clipped corners, the span table gives every triangle kept whole its source
+    vertices' view-space positions and normals as float32, as they are: a zero keeps its sign,
+    which mixing them by weights of 1 and 0 would not (−0 + 0·x is +0 for x > 0)."""
+    won_seen = []
+    real = pipeline.shading_fragments
+
+    def spy(won, tri_index, perspective, ws=None, reads=EVERYTHING):
+        won_seen.append((won, tri_index.copy(), perspective))
+        return real(won, tri_index, perspective, ws, reads)
+
+    monkeypatch.setattr(pipeline, "shading_fragments", spy)
+    render(scene("phong", LIGHTS["one-scene-light"]))
+    won, tri_index, perspective = won_seen[-1]
+    geo, whole = won.geometry, np.flatnonzero(won.piece < 0)
+    first = geo.triangles[won.clip_source[whole[0]]]
+    geo.verts_view[first[0], 0], geo.verts_view[first[1], 0] = -0.0, 1.0
+    geo.normals_view[first[0], 1], geo.normals_view[first[2], 1] = -0.0, 0.5
+    corners = real(won, tri_index, perspective, None, SPAN_TABLE).span_corners
+    for k in whole:
+        vertices = geo.triangles[won.clip_source[k]]
+        assert corners[k, :9].tobytes() == geo.verts_view[vertices].astype(np.float32).tobytes(), k
+        assert corners[k, 9:18].tobytes() == geo.normals_view[vertices].astype(np.float32).tobytes(), k
+    assert np.signbit(corners[whole[0], 0]) and np.signbit(corners[whole[0], 10])
+
+
 def test_one_thread_and_two_give_the_same_bytes():
     s = scene("phong", LIGHTS["two-lights"], size=(160, 120))
     reference = render(s)
