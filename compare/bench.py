@@ -8,8 +8,10 @@ Not a test: a command. What is measured, and how:
   machine hits both alike. A frame is scene-ready to uint8 image in memory: for VTK one
   ``Render()`` and the read-back of colour and depth (:func:`compare.reference.read_frame`);
   for ours everything :func:`renderer.render` does (nothing that depends on the camera is
-  kept from one frame to the next). Reported: median, min and max of each, and the median
-  of the per-pair ratios ours/VTK (< 1: ours is faster).
+  kept from one frame to the next). Reported: median, min and max of each, the median
+  of the per-pair ratios ours/VTK (< 1: ours is faster), and how many of our frames used
+  fewer threads than asked because another process kept a core busy
+  (:mod:`renderer.free_cores`).
 - **Peak memory** (:func:`peak_memory`). Each renderer draws the scene in a child process
   of its own: it first warms up on a tiny scene (kernels loaded; VTK's OpenGL context and
   shaders made), then loads the scene, hands the free memory of its heap back to the system
@@ -73,20 +75,34 @@ def alternate(first, second, repeat: int, warm_up: int) -> tuple[list[float], li
 
 def time_frames(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:
     """Frame times (ms) of both renderers on ``scene``, alternating in pairs; see the module
-    docstring. Returns ``{"ours": {median, min, max}, "reference": {...}, "ratio": median of ours/VTK}``."""
+    docstring. Returns ``{"ours": {median, min, max}, "reference": {...}, "ratio": median of
+    ours/VTK, "fewer_threads": n}``, n the timed frames of ours that used fewer threads than
+    numba was set to, because other processes kept a core busy (:mod:`renderer.free_cores`):
+    a frame so drawn is slower for a reason outside the renderer."""
+    import numba
+
     from renderer import render
+    from renderer.free_cores import MACHINE
 
     pl = build_plotter(scene)
+    used = []  # threads each of our frames used
+
+    def our_frame():
+        render(scene)
+        used.append(MACHINE.last_frame)
 
     def vtk_frame():
         pl.ren_win.Render()
         read_frame(pl)
 
     try:
-        ours, vtk, ratios = alternate(lambda: render(scene), vtk_frame, repeat, warm_up)
+        ours, vtk, ratios = alternate(our_frame, vtk_frame, repeat, warm_up)
     finally:
         pl.close()
-    return {"ours": _summary(ours), "reference": _summary(vtk), "ratio": statistics.median(ratios)}
+    asked = numba.get_num_threads()
+    fewer = sum(1 for n in used[-repeat:] if n is not None and n < asked)
+    return {"ours": _summary(ours), "reference": _summary(vtk), "ratio": statistics.median(ratios),
+            "fewer_threads": fewer}
 
 
 def thread_contention(scene, repeat: int = 15, warm_up: int = WARM_UP) -> dict:

@@ -59,8 +59,10 @@ def measure(args, say=print) -> dict:
         elif args.memory == "largest" and (largest is None or (row["triangles"], size) > largest[0]):
             largest = ((row["triangles"], size), row, name, size)
         run["rows"].append(row)
+        fewer = f" ({row['fewer_threads']} of {args.repeat} of our frames on fewer threads: a core was busy)" \
+            if row.get("fewer_threads") else ""
         say(f"[{i}/{len(cases)}] {name} {row['size']}: ours {row['ours']['median']:.1f} ms, "
-            f"VTK {row['reference']['median']:.1f} ms, ours/VTK {row['ratio']:.2f}")
+            f"VTK {row['reference']['median']:.1f} ms, ours/VTK {row['ratio']:.2f}{fewer}")
     if largest is not None:
         _, row, name, size = largest
         say(f"peak memory of {name} {row['size']} (two child processes) ...")
@@ -102,6 +104,11 @@ def report(run: dict) -> str:
     lines = [markdown_table(run["rows"]), "",
              f"{run['started']}, {run['cpus']} CPUs, load average {run['load_before']} before, "
              f"{run['load_after']} after; median of {run['repeat']} alternating pairs."]
+    slowed = [r for r in run["rows"] if r.get("fewer_threads")]
+    lines.append("Our frames that used fewer threads than asked, because other processes kept a core busy "
+                 "(renderer/free_cores.py): " + (", ".join(f"{r['scene']} {r['size']} {r['fewer_threads']} of "
+                                                           f"{run['repeat']}" for r in slowed) if slowed else "none")
+                 + ".")
     if "startup_s" in run:
         s = run["startup_s"]
         lines.append(f"Start-up (`scanlab render icosphere:level=5`, fresh process): kernel cache cold "

@@ -2,11 +2,13 @@
 from __future__ import annotations
 
 import os
+import time
 
 import pytest
 
 from compare.bench import alternate, busy_core, markdown_table, peak_memory, thread_contention, time_frames
 from compare.bench_scenes import bench_scene
+from renderer.free_cores import MACHINE, SAMPLE_SECONDS
 
 
 def test_frames_of_both_renderers_are_timed_in_pairs():
@@ -43,6 +45,20 @@ def test_one_thread_and_two_are_timed_in_pairs_while_a_core_is_busy(monkeypatch)
         assert 0 < r[side]["min"] <= r[side]["median"] <= r[side]["max"]
     assert r["ratio"] > 0 and r["layer"] == "tbb"
     assert r["two_used_one"] == 3  # the spinning child holds a core: one thread is what is left
+
+
+def test_our_frames_on_fewer_threads_are_counted(monkeypatch):
+    """A frame of ours drawn on one thread of two, because another process holds a core, is
+    counted: each timed frame while a child spins, none when the threads are not fitted."""
+    scene = bench_scene("icosphere:level=1", (64, 48))
+    monkeypatch.setenv("SCANLAB_DYNAMIC_THREADS", "0")
+    assert time_frames(scene, repeat=3, warm_up=1)["fewer_threads"] == 0
+    monkeypatch.setenv("SCANLAB_DYNAMIC_THREADS", "1")
+    with busy_core():
+        MACHINE.refresh()  # the load of the last moment, not since the tests before
+        time.sleep(SAMPLE_SECONDS)
+        MACHINE.refresh()
+        assert time_frames(scene, repeat=3, warm_up=1)["fewer_threads"] == 3
 
 
 def test_pairs_alternate_which_frame_goes_first_after_the_warm_up():

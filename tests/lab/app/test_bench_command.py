@@ -7,7 +7,7 @@ import subprocess
 import sys
 
 from compare.bench_scenes import BENCH_SCENES
-from lab.app.bench_command import END, START, write_between_markers
+from lab.app.bench_command import END, START, report, write_between_markers
 
 
 def scanlab(*args):
@@ -76,3 +76,13 @@ def test_json_and_markdown_go_into_folders_that_do_not_exist_yet(tmp_path):
     assert done.returncode == 0, done.stderr
     assert json.loads(out.read_text())["rows"][0]["scene"] == "ico5-flat"
     assert START in page.read_text()
+
+
+def test_the_report_names_the_rows_whose_frames_used_fewer_threads():
+    row = {"size": "8x8", "triangles": 10, "ours": {"median": 2.0, "min": 1.0, "max": 3.0},
+           "reference": {"median": 4.0, "min": 3.5, "max": 5.0}, "ratio": 0.5}
+    run = {"started": "now", "cpus": 2, "load_before": "0", "load_after": "0", "repeat": 15,
+           "rows": [{"scene": "a", **row, "fewer_threads": 0}, {"scene": "b", **row, "fewer_threads": 4}]}
+    assert "kept a core busy (renderer/free_cores.py): b 8x8 4 of 15." in report(run)
+    run["rows"][1]["fewer_threads"] = 0
+    assert "kept a core busy (renderer/free_cores.py): none." in report(run)
