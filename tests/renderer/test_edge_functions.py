@@ -13,9 +13,11 @@ import pytest
 from renderer.edge_functions import fill_narrow_rows, lanes_start, owns_ties
 from renderer.fill_rules import FILL_RULES, TOP_LEFT
 from renderer.jit import njit
-from renderer.raster import DEPTH_CLEAR, EMPTY, fill_row, set_up
+from renderer.raster import fill_row, set_up
 from renderer.spans import LANES
 from renderer.window import SUBPIXEL
+
+from .pixel_soups import same_buffer_both_ways, window_of
 
 
 @njit
@@ -111,17 +113,11 @@ def test_narrow_triangles_by_edge_functions_fill_what_a_division_per_row_fills(r
     height = 41
     rng = np.random.default_rng(width)
     fixed = narrow_triangles(rng, 800, width, height)
-    z = np.where(rng.random((len(fixed), 1)) < 0.3, 0.5, rng.uniform(0, 1, (len(fixed), 3)))
-    window = np.concatenate([fixed / SUBPIXEL + 0.5, z[..., None] * np.ones((len(fixed), 3, 1))], axis=2)
-    setup = set_up(fixed, window, height, False)
-    buffers = []
-    for by_lanes in (True, False):
-        depth, tri_index = np.full((height, width), DEPTH_CLEAR, np.int32), np.full((height, width), EMPTY, np.int32)
-        drawn = draw_narrow_ones(setup, FILL_RULES[rule], depth_test, by_lanes, depth, tri_index)
-        buffers.append((depth, tri_index))
-    np.testing.assert_array_equal(buffers[0][1], buffers[1][1])
-    np.testing.assert_array_equal(buffers[0][0], buffers[1][0])
-    assert drawn > 500 and len(np.unique(buffers[1][1])) > 60  # the sample really draws, and overdraws
+    setup = set_up(fixed, window_of(rng, fixed), height, False)
+    drawn, tri_index = same_buffer_both_ways(
+        lambda by_lanes, depth, tri_index: draw_narrow_ones(setup, FILL_RULES[rule], depth_test, by_lanes, depth,
+                                                            tri_index), width, height)
+    assert drawn > 500 and len(np.unique(tri_index)) > 60  # the sample really draws, and overdraws
 
 
 _NARROW_AS_PYTHON = """

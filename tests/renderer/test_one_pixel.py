@@ -13,9 +13,10 @@ from renderer import raster
 from renderer.fill_rules import FILL_RULES, TOP_LEFT
 from renderer.jit import njit
 from renderer.one_pixel import NOT_ONE_COLUMN, OUTSIDE_IMAGE, fill_one_centre, one_column
-from renderer.raster import DEPTH_CLEAR, EMPTY, fill_row, set_up, whole_triangles
+from renderer.raster import fill_row, set_up, whole_triangles
 from renderer.window import SUBPIXEL
 
+from .pixel_soups import same_buffer_both_ways, window_of
 from .single_thread import one_thread
 
 
@@ -77,12 +78,6 @@ def pixel_sized(rng, n, width, height, reach=1.0):
     return np.concatenate([fixed, fixed[twins][:, ::-1]]).astype(np.int64)
 
 
-def window_of(rng, fixed):
-    """Window corners for ``fixed``: random depths, a third of the triangles at one equal depth (ties)."""
-    z = np.where(rng.random((len(fixed), 1)) < 0.3, 0.5, rng.uniform(0, 1, (len(fixed), 3)))
-    return np.concatenate([fixed / SUBPIXEL + 0.5, z[..., None]], axis=2)
-
-
 @pytest.mark.parametrize("rule", ["top-left", "bottom-right"])
 @pytest.mark.parametrize("depth_test", [True, False])
 def test_one_centre_alone_fills_what_a_division_per_row_fills(rule, depth_test):
@@ -93,14 +88,10 @@ def test_one_centre_alone_fills_what_a_division_per_row_fills(rule, depth_test):
     rng = np.random.default_rng(7)
     fixed = pixel_sized(rng, 3000, width, height)
     setup = set_up(fixed, window_of(rng, fixed), height, False)
-    buffers = []
-    for alone in (True, False):
-        depth, tri_index = np.full((height, width), DEPTH_CLEAR, np.int32), np.full((height, width), EMPTY, np.int32)
-        drawn = draw_one_centre_ones(setup, FILL_RULES[rule], depth_test, alone, depth, tri_index)
-        buffers.append((depth, tri_index))
-    np.testing.assert_array_equal(buffers[0][1], buffers[1][1])
-    np.testing.assert_array_equal(buffers[0][0], buffers[1][0])
-    assert drawn > 500 and len(np.unique(buffers[1][1])) > 60  # the sample really draws, and overdraws
+    drawn, tri_index = same_buffer_both_ways(
+        lambda alone, depth, tri_index: draw_one_centre_ones(setup, FILL_RULES[rule], depth_test, alone, depth,
+                                                             tri_index), width, height)
+    assert drawn > 500 and len(np.unique(tri_index)) > 60  # the sample really draws, and overdraws
 
 
 def fine_and_coarse(rng, width, height):
