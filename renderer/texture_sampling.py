@@ -2,12 +2,16 @@
 
 Texture space: s to the right, t up, (0, 0) the bottom-left corner of the image, texel
 (i, j) covering [i/W, (i+1)/W] × [j/H, (j+1)/H] with its centre at ((i+0.5)/W, (j+0.5)/H).
-All of a scene's textures live in one flat array (``texels``, (Σ H·W,) uint64, the 8-bit
+All of a scene's textures live in one flat array (``texels``, (Σ H·W,) uint32, the 8-bit
 values VTK uploads), each object's starting at ``offset[o]``, rows from the bottom (see
 :mod:`lab.texture`): :class:`Textures`, built once per frame by :func:`texture_table`.
-One integer holds a texel's r, g and b, each in a 16-bit **lane** (bits 0–7, 16–23,
-32–39; :func:`texel_lanes`), as llvmpipe widens 8-bit texels to 16-bit lanes to filter them: one
-load fetches a texel, and the bilinear blend works on the three lanes at once.
+A texel is stored as llvmpipe stores an 8-bit texture, r, g and b in one 32-bit word (bits
+0–7, 8–15, 16–23; :func:`pack_texels`), and widened when it is read into 16-bit **lanes**
+of a 64-bit integer (:func:`lanes_of`: r in bits 0–7, b in 16–23, g in 32–39), as llvmpipe
+widens 8-bit texels to 16-bit lanes to filter them: one load fetches a texel, and the
+bilinear blend works on the three lanes at once. (Kept in lanes, 8 bytes a texel, the
+2048×1024 earth of ``textured-sphere`` filled 16 MB, and its frames waited on the cache:
+4 bytes a texel made them 0.95 of the time, 512² and 1024², docs/performance.md.)
 Colours come out as value/255.
 
 - nearest: texel (⌊s·W⌋, ⌊t·H⌋);
@@ -42,8 +46,8 @@ class Textures(NamedTuple):
 
     textured (O,) bool; offset, width, height (O,) int: where its texels start in
     ``texels`` and its size; filter (O,) :data:`NEAREST` or :data:`LINEAR`; wrap (O,)
-    :data:`REPEAT` or :data:`CLAMP`; texels (Σ H·W,) uint64, all textures one after the other,
-    a texel's three 8-bit values in lanes (:func:`texel_lanes`).
+    :data:`REPEAT` or :data:`CLAMP`; texels (Σ H·W,) uint32, all textures one after the other,
+    a texel's three 8-bit values in one word (:func:`pack_texels`).
     """
 
     textured: np.ndarray
@@ -56,12 +60,12 @@ class Textures(NamedTuple):
 
 
 def texture_table(scene) -> Textures:
-    """All objects' textures in one flat (Σ H·W,) uint64 array (their texels in lanes,
-    :func:`texel_lanes`), and per object: textured flag, offset, width, height, filter and
+    """All objects' textures in one flat (Σ H·W,) uint32 array (their texels packed,
+    :func:`packed_texels`), and per object: textured flag, offset, width, height, filter and
     wrap codes.
 
     Only textured objects take rows (the kernels sample nothing for the others). With one
-    textured object the flat array is its lanes as kept, not a copy: a 2048×1024 texture
+    textured object the flat array is its packed texels as kept, not a copy: a 2048×1024 texture
     copied every frame cost more than shading the frame."""
     textured, offset, width, height, filt, wrap, chunks = [], [], [], [], [], [], []
     start = 0
@@ -75,7 +79,7 @@ def texture_table(scene) -> Textures:
         filt.append(LINEAR if t is not None and t.filter == "linear" else NEAREST)
         wrap.append(CLAMP if t is not None and t.wrap == "clamp" else REPEAT)
         if t is not None:
-            chunks.append(texel_lanes(t))
+            chunks.append(packed_texels(t))
             start += h * w
     if not chunks:
         texels = _WHITE
@@ -89,28 +93,28 @@ def texture_table(scene) -> Textures:
 LANE = 16
 """Bits per lane: a channel's 8 bits and room for the 8.8 fixed-point product of a lerp."""
 
-_LANES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_PACKED: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
-def pack_lanes(texels_8bit: np.ndarray) -> np.ndarray:
-    """(…, 3) uint8 texels → (N,) uint64: r in bits 0–7, g in 16–23, b in 32–39."""
-    t = np.asarray(texels_8bit, np.uint8).reshape(-1, 3).astype(np.uint64)
-    return t[:, 0] | (t[:, 1] << np.uint64(LANE)) | (t[:, 2] << np.uint64(2 * LANE))
+def pack_texels(texels_8bit: np.ndarray) -> np.ndarray:
+    """(…, 3) uint8 texels → (N,) uint32: r in bits 0–7, g in 8–15, b in 16–23."""
+    t = np.asarray(texels_8bit, np.uint8).reshape(-1, 3).astype(np.uint32)
+    return t[:, 0] | (t[:, 1] << np.uint32(8)) | (t[:, 2] << np.uint32(16))
 
 
-_WHITE = pack_lanes(np.full((1, 3), 255, np.uint8))
+_WHITE = pack_texels(np.full((1, 3), 255, np.uint8))
 """The table of a scene without textures: one white texel, which no kernel samples (left writeable:
 numba types a read-only array apart, and would compile the shading kernels again for it)."""
 
 
-def texel_lanes(texture) -> np.ndarray:
+def packed_texels(texture) -> np.ndarray:
     """A :class:`lab.texture.Texture`'s 8-bit texels (``texels_8bit``) packed by
-    :func:`pack_lanes`, rows from the bottom. Worked out once per texture and kept as long
+    :func:`pack_texels`, rows from the bottom. Worked out once per texture and kept as long
     as the texture lives (it does not depend on the camera)."""
-    lanes = _LANES.get(texture)
-    if lanes is None:
-        lanes = _LANES[texture] = pack_lanes(texture.texels_8bit)
-    return lanes
+    packed = _PACKED.get(texture)
+    if packed is None:
+        packed = _PACKED[texture] = pack_texels(texture.texels_8bit)
+    return packed
 
 
 @njit(cache=True, inline="always")
@@ -124,23 +128,35 @@ def wrap_index(i, size, wrap):
 UNIT32 = (np.arange(256) / 255.0).astype(np.float32)
 """An 8-bit value v as ``float32(v / 255)``, looked up (the same bits as dividing)."""
 LOW8 = np.uint64(0xFF)
+RED_BLUE = np.uint64(0x00FF00FF)
+"""A packed texel's r and b: already 16 bits apart."""
+GREEN = np.uint64(0xFF00)
+"""A packed texel's g, moved 24 bits up into the third lane."""
 LANES8 = np.uint64(0x000000FF00FF00FF)
 """The low 8 bits of each lane."""
 HALF = np.uint64(0x0000008000800080)
 """128 in each lane: the lerp's rounding."""
-U8, U16, U32 = np.uint64(8), np.uint64(LANE), np.uint64(2 * LANE)
+U8, U16, U24, U32 = np.uint64(8), np.uint64(LANE), np.uint64(24), np.uint64(2 * LANE)
 
 
 @njit(cache=True, inline="always")
 def texel(texels, offset, width, i, j):
-    """Texel (i, j) of the texture starting at ``offset``: its three channels in lanes."""
-    return texels[np.uint64(offset + j * width + i)]
+    """Texel (i, j) of the texture starting at ``offset``: its three channels in lanes (:func:`lanes_of`)."""
+    return lanes_of(texels[np.uint64(offset + j * width + i)])
+
+
+@njit(cache=True, inline="always")
+def lanes_of(packed):
+    """A packed texel (:func:`pack_texels`) widened into 16-bit lanes: r and b stay where they
+    are (bits 0–7 and 16–23), g moves from bits 8–15 to 32–39. Two masks, a shift and an or."""
+    word = np.uint64(packed)
+    return (word & RED_BLUE) | ((word & GREEN) << U24)
 
 
 @njit(cache=True, inline="always")
 def channels(lanes):
-    """The three 0..255 values ``(r, g, b)`` held in lanes."""
-    return lanes & LOW8, (lanes >> U16) & LOW8, (lanes >> U32) & LOW8
+    """The three 0..255 values ``(r, g, b)`` held in lanes (:func:`lanes_of`: r, b, g from the lowest)."""
+    return lanes & LOW8, (lanes >> U32) & LOW8, (lanes >> U16) & LOW8
 
 
 @njit(cache=True, inline="always")

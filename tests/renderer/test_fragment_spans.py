@@ -18,7 +18,7 @@ from renderer.plane_normals import face_normals
 from renderer.shading import fragment_colour
 from renderer.shading import fragments as make_fragments
 from renderer.shading import with_span_table
-from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, Textures, pack_lanes
+from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, Textures, pack_texels
 from renderer.window import SUBPIXEL
 
 from .kernel_inputs import materials, view_lights
@@ -49,7 +49,7 @@ def textures(filter_mode, wrap):
     texels = (np.random.default_rng(7).random((8 * 16, 3)) * 255).astype(np.uint8)
     return Textures(np.array([filter_mode is not None]), np.zeros(1, np.int64), np.array([16]), np.array([8]),
                     np.array([LINEAR if filter_mode == "linear" else NEAREST]),
-                    np.array([CLAMP if wrap == "clamp" else REPEAT]), pack_lanes(texels))
+                    np.array([CLAMP if wrap == "clamp" else REPEAT]), pack_texels(texels))
 
 
 LIGHTS = {"unlit": view_lights(complexity=0), "headlight": view_lights(complexity=1),

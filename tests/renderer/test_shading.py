@@ -17,13 +17,13 @@ from renderer.shading import ShadingInputs, fragment_weights, shade, span_covers
 from renderer.shading import fragments as make_fragments
 from renderer.shading import with_span_table
 from renderer.spans import span_setup, span_tcoords, span_texture_corners, span_textured_points
-from renderer.texture_sampling import NEAREST, REPEAT, Textures, pack_lanes
+from renderer.texture_sampling import NEAREST, REPEAT, Textures, pack_texels
 
 from .kernel_inputs import materials, preset_tables, view_lights
 
 BACKGROUND = np.array([10, 20, 30], np.uint8)
 UNTEXTURED = Textures(np.array([False]), np.zeros(1, np.int64), np.ones(1, np.int64), np.ones(1, np.int64),
-                      np.array([NEAREST]), np.array([REPEAT]), pack_lanes(np.full((1, 3), 255, np.uint8)))
+                      np.array([NEAREST]), np.array([REPEAT]), pack_texels(np.full((1, 3), 255, np.uint8)))
 
 
 def triangle(verts_view, normals=None, w=(1.0, 1.0, 1.0), parallel=False):
@@ -164,7 +164,7 @@ def test_the_texture_modulates_the_primary_colour_and_not_the_secondary():
     red 128 + 51 = 179, green and blue 127.5 → 128."""
     geo = triangle([[0, 0, -2], [1, 0, -2], [0, 1, -2]])
     lit = LitColours(np.zeros((3, 6)), np.array([[1.0, 0.5, 0.5, 0.2, 0.0, 0.0]]))
-    textured = UNTEXTURED._replace(textured=np.array([True]), texels=pack_lanes(np.array([[128, 255, 255]], np.uint8)))
+    textured = UNTEXTURED._replace(textured=np.array([True]), texels=pack_texels(np.array([[128, 255, 255]], np.uint8)))
     rgb = shade_all(fragments(geo, [[[0.2, 0.2]]]), geo, materials(0, 0, 0, 1, path=FACE_COLOUR), lit, textured)
     assert rgb.tolist() == [[[179, 128, 128]]]
 

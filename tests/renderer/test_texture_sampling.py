@@ -3,13 +3,13 @@ a span's loop gives what one fragment at a time gives."""
 import numpy as np
 import pytest
 
-from renderer.texture_sampling import (CLAMP, LINEAR, NEAREST, REPEAT, Textures, modulate_texels, pack_lanes, sample,
-                                       texel_lanes)
+from renderer.texture_sampling import (CLAMP, LINEAR, NEAREST, REPEAT, Textures, channels, lanes_of, modulate_texels,
+                                       pack_texels, packed_texels, sample)
 
 from .texture_filters import by_definition
 
 # a 2×2 8-bit texture, rows from the bottom: texel (0,0) = [10, 20, 30], (1,0) = [110, 120, 130], …
-TEX = pack_lanes(np.array([[10, 20, 30], [110, 120, 130], [210, 220, 230], [50, 60, 70]], dtype=np.uint8))
+TEX = pack_texels(np.array([[10, 20, 30], [110, 120, 130], [210, 220, 230], [50, 60, 70]], dtype=np.uint8))
 
 
 def at(s, t, filt=NEAREST, wrap=REPEAT):
@@ -77,7 +77,7 @@ def test_sample_is_the_filter_as_defined_inside_outside_and_on_texel_edges(filt,
     side of an edge."""
     width, height = size
     texels = np.random.default_rng(5).integers(0, 256, (width * height, 3)).astype(np.uint8)
-    lanes = pack_lanes(texels)
+    lanes = pack_texels(texels)
     for s, t in zip(*points(width, height)):
         got = np.rint(np.array(sample(lanes, 0, width, height, filt, wrap, s, t)) * 255).astype(int).tolist()
         assert got == by_definition(texels, width, height, filt, wrap, s, t), (s, t)
@@ -95,7 +95,7 @@ def test_a_span_is_modulated_by_exactly_the_values_sample_gives(filt, wrap, size
     rng = np.random.default_rng(9)
     first = rng.integers(0, 256, (7, 3)).astype(np.uint8)  # another object's texture before this one
     texels = rng.integers(0, 256, (width * height, 3)).astype(np.uint8)
-    lanes = pack_lanes(np.concatenate([first, texels]))
+    lanes = pack_texels(np.concatenate([first, texels]))
     textures = Textures(np.array([True, True]), np.array([0, 7]), np.array([7, width]), np.array([1, height]),
                         np.array([NEAREST, filt]), np.array([REPEAT, wrap]), lanes)
     s, t = points(width, height, seed=1)
@@ -113,13 +113,18 @@ def test_a_span_is_modulated_by_exactly_the_values_sample_gives(filt, wrap, size
         np.testing.assert_array_equal(colour, expected)
 
 
-def test_lanes_hold_red_green_and_blue_sixteen_bits_apart():
-    assert pack_lanes(np.array([[1, 2, 3]], np.uint8)).tolist() == [1 + (2 << 16) + (3 << 32)]
+def test_a_texel_is_packed_in_one_word_and_read_into_lanes_sixteen_bits_apart():
+    """Stored: r, g, b in bits 0, 8, 16 of a 32-bit word (4 bytes a texel); read: widened
+    into 16-bit lanes (r, b, g from the lowest), which give back r, g and b."""
+    packed = pack_texels(np.array([[1, 2, 3], [255, 128, 0]], np.uint8))
+    assert packed.dtype == np.uint32 and packed.tolist() == [1 + (2 << 8) + (3 << 16), 255 + (128 << 8)]
+    assert int(lanes_of(packed[0])) == 1 + (3 << 16) + (2 << 32)
+    assert [int(v) for v in channels(lanes_of(packed[1]))] == [255, 128, 0]
 
 
-def test_a_textures_lanes_are_worked_out_once():
+def test_a_textures_packed_texels_are_worked_out_once():
     from lab.texture import Texture
 
     tex = Texture(np.random.default_rng(2).random((4, 6, 3)))
-    assert texel_lanes(tex) is texel_lanes(tex)
-    np.testing.assert_array_equal(texel_lanes(tex), pack_lanes(tex.texels_8bit))
+    assert packed_texels(tex) is packed_texels(tex)
+    np.testing.assert_array_equal(packed_texels(tex), pack_texels(tex.texels_8bit))
