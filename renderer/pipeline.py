@@ -129,7 +129,8 @@ class ClippedMesh:
     clip_source (K,) int32, piece (K,) int32 (−1: kept whole); clipped: the
     :class:`renderer.clip.Clipped` these index (all of the frame's pieces); geometry: the
     :class:`SceneGeometry` (its ``triangles`` and ``verts_clip``); window (N + 3P, 3) and
-    fixed (N + 3P, 2) int64: the rows in window space (:func:`renderer.window.clip_to_window`).
+    fixed (N + 3P, 2) int64: the rows in window space (:func:`renderer.window.clip_to_window`);
+    cells (N + 3P,) int64: their centre cells (:func:`renderer.window.centre_cell`).
     """
 
     clip_source: np.ndarray
@@ -138,6 +139,7 @@ class ClippedMesh:
     geometry: SceneGeometry
     window: np.ndarray
     fixed: np.ndarray
+    cells: np.ndarray
 
     @property
     def count(self) -> int:
@@ -166,7 +168,7 @@ class ClippedMesh:
 
     def indexed(self) -> IndexedTriangles:
         """The triangles as the raster takes them (:class:`renderer.raster.IndexedTriangles`)."""
-        return IndexedTriangles(self.corner_index(), self.fixed, self.window)
+        return IndexedTriangles(self.corner_index(), self.fixed, self.window, self.cells)
 
     def corners_written_out(self, ws=None, name="clipped"):
         """``(tri_clip, clip_bary, clip_source)`` as :class:`ClippedTriangles` holds them."""
@@ -187,10 +189,11 @@ def clip_and_map(geo: SceneGeometry, width: int, height: int, ws=None, trivial: 
     n, p = len(geo.verts_clip), len(clipped.piece_clip)
     window = empty(ws, "window.window", (n + 3 * p, 3))
     fixed = empty(ws, "window.fixed", (n + 3 * p, 2), np.int64)
-    window_into(geo.verts_clip, width, height, window[:n], fixed[:n])
+    cells = empty(ws, "window.cells", n + 3 * p, np.int64)
+    window_into(geo.verts_clip, width, height, window[:n], fixed[:n], cells[:n])
     if p:  # no pieces, no parallel loop to start
-        window_into(clipped.piece_clip.reshape(-1, 4), width, height, window[n:], fixed[n:])
-    return ClippedMesh(clipped.source, clipped.piece, clipped, geo, window, fixed)
+        window_into(clipped.piece_clip.reshape(-1, 4), width, height, window[n:], fixed[n:], cells[n:])
+    return ClippedMesh(clipped.source, clipped.piece, clipped, geo, window, fixed, cells)
 
 
 class RasterRules(NamedTuple):

@@ -121,3 +121,59 @@ def test_batches_after_a_batch_finer_than_the_pixels_test_lone_centres_and_draw_
     assert (one_pass.tri_index >= 0).sum() > 100
     np.testing.assert_array_equal(batches.tri_index, one_pass.tri_index)
     np.testing.assert_array_equal(batches.depth, one_pass.depth)
+
+
+def test_the_corners_centre_cells_tell_a_box_without_pixel_centres():
+    """From the three corners' centre cells alone (:func:`renderer.window.centre_cell`),
+    :func:`renderer.pixel_centres.box_misses_centres` is True exactly when the box holds no
+    column or no row of pixel centres, as the coordinates say: corners on a centre, just
+    either side of one, far apart, and at negative coordinates (the floor of a negative
+    fixed-point value)."""
+    from renderer.pixel_centres import box_misses_centres
+    from renderer.window import centre_cells
+
+    rng = np.random.default_rng(13)
+    fixed, _ = sub_pixel_soup(rng, 4000, 8)
+    fixed[::4] -= 5 * SUBPIXEL  # a quarter of them at negative coordinates
+    fixed[1::5, :, 1] = fixed[1::5, :1, 1] + rng.integers(-1, 2, (len(fixed[1::5]), 3))  # within a step of one y
+    cells = np.empty(3 * len(fixed), np.int64)
+    centre_cells(fixed.reshape(-1, 2), cells)
+    cells = cells.reshape(-1, 3)
+    no_column = ceil_centre(fixed[:, :, 0].min(1)) > fixed[:, :, 0].max(1) // SUBPIXEL
+    no_row = ceil_centre(fixed[:, :, 1].min(1)) > fixed[:, :, 1].max(1) // SUBPIXEL
+    got = np.array([box_misses_centres(*c) for c in cells])
+    np.testing.assert_array_equal(got, no_column | no_row)
+    assert 500 < got.sum() < 3500 and (no_column & ~no_row).sum() > 100 and (no_row & ~no_column).sum() > 100
+
+
+@pytest.mark.parametrize("fill_rule", ["top-left", "bottom-right"])
+@pytest.mark.parametrize("cull_back", [False, True])
+def test_triangles_dropped_by_their_cells_draw_nothing_and_the_rest_set_up_alike(fill_rule, cull_back):
+    """The raster's set-up drops a triangle whose box holds no pixel centre from its corners'
+    cells before working out anything else (:data:`renderer.raster.DROP_EMPTY_BOXES`): every
+    triangle it drops gets no rows without them either, every other gets the same rows,
+    facing, planes and counter-clockwise corners, and the visibility buffers are the bytes
+    of a set-up without cells (both fill rules, with and without back-face culling)."""
+    from unittest import mock
+
+    import renderer.raster as raster
+
+    fixed, window = sub_pixel_soup(np.random.default_rng(17), 4000, 24, SUBPIXEL // 2)
+    whole = raster.whole_triangles(fixed, window)
+    with_cells = raster.set_up_corners(whole.corners, whole.vertices, 24, cull_back, lone_test=True)
+    plain = raster.set_up(fixed, window, 24, cull_back, lone_test=True)
+    drawn = plain.rows[:, 0] <= plain.rows[:, 1]
+    np.testing.assert_array_equal(with_cells.rows[:, 0] <= with_cells.rows[:, 1], drawn)
+    np.testing.assert_array_equal(with_cells.rows[drawn], plain.rows[drawn])
+    np.testing.assert_array_equal(with_cells.front[drawn], plain.front[drawn])
+    np.testing.assert_array_equal(with_cells.plane[drawn], plain.plane[drawn])
+    np.testing.assert_array_equal(with_cells.ccw[drawn], plain.ccw[drawn])
+    np.testing.assert_array_equal(with_cells.row_sums, plain.row_sums)
+    dropped = ~with_cells.front & ~drawn & plain.front  # dropped by the cells, facing the viewer
+    assert dropped.sum() > 500 and drawn.sum() > 500
+    cells = raster.rasterize_visibility(whole, 24, 24, fill_rule, cull_back=cull_back, batch=1000)
+    no_cells = whole._replace(cells=raster.NO_CELLS)
+    with mock.patch.object(raster, "DROP_EMPTY_BOXES", 0):
+        reference = raster.rasterize_visibility(no_cells, 24, 24, fill_rule, cull_back=cull_back, batch=1000)
+    np.testing.assert_array_equal(cells.tri_index, reference.tri_index)
+    np.testing.assert_array_equal(cells.depth, reference.depth)

@@ -83,8 +83,28 @@ def test_many_points_map_to_the_same_bits_on_one_thread_and_on_two():
     x, y = (points[:, 0] / w + 1.0) * (640 / 2.0), (points[:, 1] / w + 1.0) * (480 / 2.0)
     expected_fixed = np.column_stack([np.rint((x - 0.5) * SUBPIXEL), np.rint((y - 0.5) * SUBPIXEL)]).astype(np.int64)
     for threads in (one_thread, contextlib.nullcontext):
-        window, fixed = np.empty((100_000, 3)), np.empty((100_000, 2), np.int64)
+        window, fixed, cells = np.empty((100_000, 3)), np.empty((100_000, 2), np.int64), np.empty(100_000, np.int64)
         with threads():
-            window_into(points, 640, 480, window, fixed)
+            window_into(points, 640, 480, window, fixed, cells)
         np.testing.assert_array_equal(window, np.column_stack([x, y, (points[:, 2] / w + 1.0) / 2.0]))
         np.testing.assert_array_equal(fixed, expected_fixed)
+        np.testing.assert_array_equal(cells, centre_cells_by_formula(expected_fixed))
+
+
+def centre_cells_by_formula(fixed):
+    """:func:`renderer.window.centre_cell` of each row of ``fixed`` (M, 2), written out in numpy:
+    per axis 2·⌊v / 256⌋ + (v not a multiple of 256), x in the high 32 bits, y in the low 32."""
+    axis = 2 * np.floor_divide(fixed, SUBPIXEL) + (fixed % SUBPIXEL != 0)
+    return (axis[:, 0] << 32) | (axis[:, 1] & 0xFFFFFFFF)
+
+
+def test_centre_cells_are_the_formula_for_vertices_given_whole():
+    """Vertex tables made without the window mapping (triangles given whole) get the same
+    cells from :func:`renderer.window.centre_cells`, negative coordinates included."""
+    from renderer.window import centre_cells
+
+    fixed = np.random.default_rng(3).integers(-4 * SUBPIXEL, 4 * SUBPIXEL, (5000, 2))
+    fixed[::3] = fixed[::3] // SUBPIXEL * SUBPIXEL  # on pixel centres
+    cells = np.empty(5000, np.int64)
+    centre_cells(fixed, cells)
+    np.testing.assert_array_equal(cells, centre_cells_by_formula(fixed))
