@@ -57,7 +57,7 @@ from renderer.edge_walk import edge_walk, fill_walked, split_at_middle
 from renderer.fill_rules import FILL_RULES, TOP_LEFT
 from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, new_tiles
 from renderer.pixel_centres import LONE_ROWS, box_misses_centres, ceil_div, centre_rows
-from renderer.window import SUBPIXEL, WindowVertices, centre_cells, signed_area_corners, window_edges
+from renderer.window import NO_CELLS, SUBPIXEL, WindowVertices, centre_cells, signed_area_corners, window_edges
 from renderer.workspace import empty
 
 
@@ -159,15 +159,9 @@ SETUP_CHUNK = np.uint64(1024)
 DROP_BACK_FACES, DROP_MISSED_CENTRES, DROP_EMPTY_BOXES = 1, 2, 4
 """Bits of the set-up's ``drops`` (:func:`setup_triangles`): back-face culling (a clockwise
 triangle gets no rows); the test of a box's lone pixel centre (:func:`renderer.pixel_centres.centre_rows`);
-and, first of all, a box without pixel centres found from the corners' centre cells
-(:func:`renderer.pixel_centres.box_misses_centres`): such a triangle gets no rows, as the box
-test of :func:`renderer.pixel_centres.centre_rows` would give it, but neither its area, its
-facing (False) nor its weights' plane are worked out, and its corners' coordinates are not
-read (set when the vertices come with their cells, :class:`renderer.window.WindowVertices`:
-in the opaque pass, batches after one finer than :data:`renderer.pixel_centres.LONE_ROWS`;
-the translucent pass reads every triangle's weights).
-Measured, the set-up alone on the batches of a frame, two copies in one process, both
-orders: the 1M-triangle scan at 512² 0.85–0.88 of the time."""
+and, first of all, a box without pixel centres told by the corners' centre cells
+(:func:`renderer.pixel_centres.box_misses_centres`, set when the vertices come with them):
+no rows, and no area, facing (False) or weights' plane worked out (docs/performance.md)."""
 
 
 @njit(cache=True, parallel=True)
@@ -535,10 +529,6 @@ def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back
                           lone_test)
 
 
-NO_CELLS = np.empty(0, np.int64)
-"""The centre cells of vertices that come without them: the set-up then drops nothing by them."""
-
-
 def mean_rows(setup: TriangleSetup) -> float:
     """The rows the set-up triangles span on average (0.0 for none), from the chunks' sums (a
     sample of 256 triangles' rows, read after the set-up, cost 90 µs a batch in cache misses)."""
@@ -561,9 +551,8 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     :data:`~renderer.hidden_back_faces.BACKS_LAST_ROWS` rows or more on average, the back
     faces after the front faces (listed, :mod:`renderer.draw_lists`), skipping those a tile
     z-buffer shows hidden: the same buffer, quicker for closed surfaces seen from outside.
-    A batch after one finer than the pixels (:data:`~renderer.pixel_centres.LONE_ROWS`, by
-    the mean rows of its triangles) drops those whose box holds no pixel centre by their
-    corners' centre cells, and tests lone centres: the same buffer.
+    A batch after one finer than the pixels (:data:`~renderer.pixel_centres.LONE_ROWS`) drops
+    triangles by their corners' centre cells and tests lone centres: the same buffer.
     No triangles (a scene with nothing opaque): the clear buffer, :func:`clear_visibility`.
     """
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)

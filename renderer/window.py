@@ -32,6 +32,10 @@ class WindowVertices(NamedTuple):
     cells: np.ndarray
 
 
+NO_CELLS = np.empty(0, np.int64)
+"""The centre cells of vertices that come without them: the set-up then drops nothing by them."""
+
+
 def clip_to_window(tri_clip, width, height, ws=None, name="window.mapped"):
     """Clip-space points (..., 4) → window space: (K, 3, 4) triangles, or (M, 4) vertices.
 

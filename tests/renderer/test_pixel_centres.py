@@ -157,6 +157,7 @@ def test_triangles_dropped_by_their_cells_draw_nothing_and_the_rest_set_up_alike
     from unittest import mock
 
     import renderer.raster as raster
+    from renderer.window import NO_CELLS
 
     fixed, window = sub_pixel_soup(np.random.default_rng(17), 4000, 24, SUBPIXEL // 2)
     whole = raster.whole_triangles(fixed, window)
@@ -172,7 +173,7 @@ def test_triangles_dropped_by_their_cells_draw_nothing_and_the_rest_set_up_alike
     dropped = ~with_cells.front & ~drawn & plain.front  # dropped by the cells, facing the viewer
     assert dropped.sum() > 500 and drawn.sum() > 500
     cells = raster.rasterize_visibility(whole, 24, 24, fill_rule, cull_back=cull_back, batch=1000)
-    no_cells = whole._replace(cells=raster.NO_CELLS)
+    no_cells = whole._replace(cells=NO_CELLS)
     with mock.patch.object(raster, "DROP_EMPTY_BOXES", 0):
         reference = raster.rasterize_visibility(no_cells, 24, 24, fill_rule, cull_back=cull_back, batch=1000)
     np.testing.assert_array_equal(cells.tri_index, reference.tri_index)
