@@ -85,12 +85,12 @@ and first drops the triangles whose box holds none by their corners' centre cell
 (:func:`box_misses_centres`, :data:`renderer.raster.DROP_EMPTY_BOXES`),
 when the batch before it spanned fewer rows a triangle than this on average: a mesh finer
 than the pixels, whose triangles mostly hold no centre, the rest one, and most of those
-miss it. The cells, measured the same way (40 pairs, medians, the raster stage and the whole
-frame): the 1M-triangle scan at 512² 0.897 and 0.934; with them in batches up to 1.5 rows a
-triangle, the 270k one at 512² (0.75–1.06 rows) 1.011 and 1.001, ico7 at 512² (2.5) and the
-level-4 sponge at 512² (2.9) frames of 1.03, so they go with the lone test. Measured, the set-up and the raster of whole frames, the test on and off
+miss it. Measured, the set-up and the raster of whole frames, the test on and off
 alternating in one process (ratios on/off, the same buffers): a 1M-triangle scan at 512²
 (0.11–0.38 rows a triangle; drawable triangles 342k → 121k) 0.80; but the 270k one at 512²
 (0.75–1.06 rows; 208k → 154k) 1.05–1.10 and the 1M one at 1024² 1.02–1.05, where the
-test cost the set-up more than it saved the raster."""
-
+test cost the set-up more than it saved the raster. The cells, measured the same way (40
+pairs, medians, the raster stage and the whole frame): the 1M-triangle scan at 512² 0.897
+and 0.934; in batches up to 1.5 rows a triangle, the 270k one at 512² 1.011 and 1.001, and
+frames of ico7 at 512² (2.5 rows) and of the level-4 sponge at 512² (2.9) 1.03: so they go
+with the lone test."""

@@ -65,14 +65,14 @@ class TriangleSetup(NamedTuple):
     """Per-triangle set-up, done once (:func:`setup_triangles`).
 
     front (K,) bool, counter-clockwise on screen (False for a triangle dropped by its
-    corners' centre cells, :data:`DROP_EMPTY_BOXES`, whose area is not worked out); ccw (K, 3, 2) the fixed-point vertices
-    ordered counter-clockwise (for the span test); rows (K, 2) first and last window row of
-    pixel centres it may cover (none when first > last); plane (K, 11): x0, y0, e1x, e1y,
-    e2x, e2y — vertex 0 and the edges to vertices 1 and 2 in float window coordinates, in
-    the triangle's own vertex order (for the weights) — then the depth plane ax, ay, az,
-    zx, zy (:func:`depth_plane`). A triangle that draws nothing (no area, culled, or no pixel
-    centre it can cover: :mod:`renderer.pixel_centres`) gets no rows, ``ccw`` or depth plane
-    (nor weights, when its centre cells dropped it).
+    corners' centre cells, :data:`DROP_EMPTY_BOXES`, whose area is not worked out); ccw
+    (K, 3, 2) the fixed-point vertices ordered counter-clockwise (for the span test); rows
+    (K, 2) first and last window row of pixel centres it may cover (none when first >
+    last); plane (K, 11): x0, y0, e1x, e1y, e2x, e2y — vertex 0 and the edges to vertices 1
+    and 2 in float window coordinates, in the triangle's own vertex order (for the weights)
+    — then the depth plane ax, ay, az, zx, zy (:func:`depth_plane`). A triangle that draws
+    nothing (no area, culled, or no pixel centre it can cover: :mod:`renderer.pixel_centres`)
+    gets no rows, ``ccw`` or depth plane (nor weights, when its centre cells dropped it).
     row_sums (C,) int64: for each chunk of :data:`SETUP_CHUNK` triangles the rows they span
     together (for :func:`mean_rows`). listed (K,) int32, counts (⌈K / LIST_CHUNK⌉, 2) int64: for back faces
     drawn last, the triangles that draw by facing (:func:`renderer.draw_lists.list_by_facing`).
