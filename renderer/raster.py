@@ -483,16 +483,17 @@ class IndexedTriangles(NamedTuple):
         return len(self.corners.source)
 
 
-def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray) -> IndexedTriangles:
+def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, with_cells: bool = True) -> IndexedTriangles:
     """Per-triangle tables (K, 3, 2) and (K, 3, 3) as :class:`IndexedTriangles`: triangle k's
-    corners on rows 3k, 3k + 1, 3k + 2 of their vertex tables (3K, 2) and (3K, 3)."""
+    corners on rows 3k, 3k + 1, 3k + 2 of their vertex tables (3K, 2) and (3K, 3), with their
+    centre cells unless ``with_cells`` is False (then :data:`~renderer.window.NO_CELLS`)."""
     tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
     tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
     if len(tri_fixed) != len(tri_window):
         raise ValueError("tri_fixed and tri_window must hold the same triangles")
     fixed = tri_fixed.reshape(-1, 2)
-    cells = np.empty(len(fixed), np.int64)
-    if len(fixed):
+    cells = np.empty(len(fixed), np.int64) if with_cells else NO_CELLS
+    if with_cells and len(fixed):
         centre_cells(fixed, cells)
     return IndexedTriangles(CornerIndex.of_whole(len(tri_fixed)), fixed, tri_window.reshape(-1, 3), cells)
 
@@ -524,9 +525,8 @@ def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back
     """:func:`set_up_corners` of triangles given whole: (K, 3, 2) fixed and (K, 3, 3) window corners;
     every triangle's facing and weights' plane worked out (no centre cells: the translucent
     pass reads them all)."""
-    whole = whole_triangles(tri_fixed, tri_window)
-    return set_up_corners(whole.corners, whole.vertices._replace(cells=NO_CELLS), height, cull_back, ws, name,
-                          lone_test)
+    whole = whole_triangles(tri_fixed, tri_window, with_cells=False)
+    return set_up_corners(whole.corners, whole.vertices, height, cull_back, ws, name, lone_test)
 
 
 def mean_rows(setup: TriangleSetup) -> float:
