@@ -15,6 +15,8 @@ dispatch on the code: a new model adds its entry below and one branch there.
 """
 from __future__ import annotations
 
+import weakref
+
 import numpy as np
 
 from renderer.jit import njit
@@ -105,11 +107,29 @@ def store_span(colour, count, out):
     store8(colour, count, out)
 
 
+_TABLES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+"""Each scene's material table (:func:`material_table`), kept as long as the scene lives."""
+
+
 def material_table(scene) -> Materials:
     """Every object's row, filled by its reflection model (``material.reflection_model``:
-    an unlit object draws VTK's unlit colour)."""
+    an unlit object draws VTK's unlit colour).
+
+    A table depends on the scene's objects alone (not on the camera), and a scene is not
+    changed in place (a frozen dataclass, compared by identity), so its table is made once
+    and given to each of its frames; callers must not write to it (left writeable: numba
+    types a read-only array apart and would compile the kernels again for it). Made afresh,
+    a frame's table took 15 µs of Python (three objects; kept, 0.2 µs)."""
+    table = _TABLES.get(scene)
+    if table is None:
+        table = _TABLES[scene] = new_material_table(scene.objects)
+    return table
+
+
+def new_material_table(objects) -> Materials:
+    """:func:`material_table` of a tuple of scene objects, made afresh."""
     model, path, lit, amb, dif, spe, power = [], [], [], [], [], [], []
-    for obj in scene.objects:
+    for obj in objects:
         name = obj.material.reflection_model
         room = REFLECTION_MODELS[name]
         row = room.material_row(obj.material)
@@ -120,4 +140,4 @@ def material_table(scene) -> Materials:
     as_int = lambda v: np.array(v, np.int64)  # noqa: E731
     as_float = lambda v: np.array(v, np.float64)  # noqa: E731
     return Materials(as_int(model), as_int(path), np.array(lit, np.bool_), as_float(amb), as_float(dif),
-                     as_float(spe), as_float(power), as_float([obj.material.opacity for obj in scene.objects]))
+                     as_float(spe), as_float(power), as_float([obj.material.opacity for obj in objects]))

@@ -69,6 +69,29 @@ def test_a_flat_textbook_object_is_lit_once_per_face():
         == [FACE_COLOUR]
 
 
+def test_a_scene_keeps_its_material_table_and_a_changed_scene_gets_its_own():
+    """The table is made once per scene (frames of one scene share it); a scene made from it
+    with another material, even with the same objects' meshes, gets a table of its own; and
+    the kept table goes with its scene."""
+    import gc
+    from dataclasses import replace
+
+    from renderer.reflection import registry
+
+    obj = SceneObject(mesh=smooth_quad(), material=Material(opacity=0.5))
+    scene = Scene(image=Image(), camera=Camera(), lights=(), objects=(obj,))
+    first = material_table(scene)
+    assert material_table(scene) is first
+    assert material_table(replace(scene, camera=Camera(position=(0.0, 0.0, 9.0)))).opacity.tolist() == [0.5]
+    other = replace(scene, objects=(replace(obj, material=Material(opacity=0.25)),))
+    assert material_table(other).opacity.tolist() == [0.25]
+    assert material_table(scene).opacity.tolist() == [0.5]
+    kept = len(registry._TABLES)
+    del scene, other
+    gc.collect()
+    assert len(registry._TABLES) == kept - 2
+
+
 def test_a_span_is_stored_as_round_half_even_of_its_clamped_colours_three_bytes_a_pixel():
     """store_span (one vectorised loop over the bytes of the row, r, g, b side by side) writes
     round_half_even(clamp(c, 0, 1)·255) of each channel, as numpy works it out in float32, for
