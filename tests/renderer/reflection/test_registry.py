@@ -4,12 +4,16 @@ The ground floor keeps the list of names (``lab.scene.MODELS``, which loading va
 the registry must cover exactly those, and the dispatch kernel must hand each code to its
 own model.
 """
+import gc
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
 from lab.mesh import Mesh
 from lab.scene import MODELS, Material, Scene, SceneObject, Camera, Image
 from lab.shapes import quad
+from renderer.reflection import registry
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_AS_GIVEN, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import CODES, REFLECTION_MODELS, material_table, reflect
 
@@ -73,11 +77,6 @@ def test_a_scene_keeps_its_material_table_and_a_changed_scene_gets_its_own():
     """The table is made once per scene (frames of one scene share it); a scene made from it
     with another material, even with the same objects' meshes, gets a table of its own; and
     the kept table goes with its scene."""
-    import gc
-    from dataclasses import replace
-
-    from renderer.reflection import registry
-
     obj = SceneObject(mesh=smooth_quad(), material=Material(opacity=0.5))
     scene = Scene(image=Image(), camera=Camera(), lights=(), objects=(obj,))
     first = material_table(scene)
