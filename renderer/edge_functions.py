@@ -34,7 +34,7 @@ import numpy as np
 from renderer.jit import njit
 from renderer.min_max import larger, smaller
 from renderer.spans import LANES, round_up_to_lanes
-from renderer.visibility_buffer import depth_bits, nearer_or_later
+from renderer.visibility_buffer import depth_bits, kept_depth, nearer_or_later
 from renderer.window import SUBPIXEL, SUBPIXEL_BITS
 
 
@@ -104,6 +104,6 @@ def fill_narrow_rows(f, columns, lo, hi, plane, kk, top_left, depth_test, depth,
             z = depth_bits(z_row + zx * (col + 0.5 - ax))
             old_z, old_k = depth_row[at], index_row[at]
             nearer = inside & (nearer_or_later(z, kk, old_z, old_k) | (not depth_test))
-            depth_row[at] = z if nearer else old_z
+            depth_row[at] = kept_depth(z, old_z, inside) if depth_test else (z if inside else old_z)
             index_row[at] = kk if nearer else old_k
         e0, e1, e2 = e0 + r0, e1 + r1, e2 + r2

@@ -45,6 +45,19 @@ def nearer_or_later(z, kk, old_z, old_k):
 
 
 @njit(cache=True, inline="always")
+def kept_depth(z, old_z, inside):
+    """The depth a pixel holding ``old_z`` keeps after the z-buffer test of a fragment at
+    depth ``z``, where ``inside`` says the fragment is there at all: the nearer of the two
+    (an equal depth is the same depth, whichever triangle takes the pixel), ``old_z`` where
+    there is no fragment. Stored depths are at most :data:`DEPTH_CLEAR`, so the missing
+    fragment is put there, behind or level with every stored depth, and the result is a
+    minimum — with no value "as it was" that the compiler could turn into a store left
+    out: a vector loop then stores whole lanes (``vmovdqu``) where it made masked stores
+    (``vpmaskmovd``), slow on AMD's processors and never forwarded to the next load."""
+    return smaller(old_z, larger(z, DEPTH_CLEAR * (1 - np.int32(inside))))
+
+
+@njit(cache=True, inline="always")
 def fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row):
     """The depth test of columns ``first … last`` (two or more) of one row (``depth_row``,
     ``index_row``; see :func:`fill_columns`) in whole groups of
@@ -67,8 +80,9 @@ def fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row):
         at = np.uint64(col)  # unsigned: numba adds no wrap-around for a negative index, which kept this loop scalar
         z = depth_bits(z_row + zx * (col + 0.5 - ax))
         old_z, old_k = depth_row[at], index_row[at]
-        nearer = nearer_or_later(z, kk, old_z, old_k) & (col >= first) & (col <= last)
-        depth_row[at] = z if nearer else old_z
+        inside = (col >= first) & (col <= last)
+        nearer = nearer_or_later(z, kk, old_z, old_k) & inside
+        depth_row[at] = kept_depth(z, old_z, inside)
         index_row[at] = kk if nearer else old_k
 
 

@@ -3,6 +3,7 @@ finishing its own rows."""
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -13,8 +14,10 @@ import pytest
 from renderer.bands import BLOCK_ROWS
 from renderer.jit import njit
 from renderer.spans import LANES
-from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, clear_band, depth_bits,
-                                        depth_to_window, fill_columns, finish_band, nearer_or_later)
+from renderer.window import SUBPIXEL
+from renderer.edge_functions import fill_narrow_rows
+from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, clear_band, depth_bits, depth_to_window,
+                                        fill_columns, fill_lanes, finish_band, kept_depth, nearer_or_later)
 
 
 @njit
@@ -69,6 +72,60 @@ def test_a_span_is_tested_in_whole_lanes_as_pixel_by_pixel(width):
             fill_columns(1, first, last, z_row, zx, ax, kk, True, depth, tri_index)
             plain_fill(1, first, last, z_row, zx, ax, kk, plain_depth, plain_index)
             assert np.array_equal(depth, plain_depth) and np.array_equal(tri_index, plain_index), (first, last)
+
+
+@njit
+def kept_depths(z, old_z, inside, out):
+    for i in range(z.shape[0]):
+        out[i] = kept_depth(z[i], old_z[i], inside[i])
+
+
+def test_the_depth_kept_is_the_winners_and_the_old_one_where_no_fragment_is():
+    """Every pair of depths on the buffer's grid near 0, the middle and the clear value, the
+    fragment there or not: the depth the pixel keeps is the fragment's where it wins the test
+    (by either triangle number: a tie keeps the same depth), else the old one."""
+    grid = np.array([0, 1, 2, 1 << 23, (1 << 23) + 1, DEPTH_CLEAR - 1, DEPTH_CLEAR], np.int32)
+    z, old_z = (a.ravel() for a in np.meshgrid(grid, grid))
+    for inside in (True, False):
+        out = np.empty(len(z), np.int32)
+        kept_depths(z, old_z, np.full(len(z), inside), out)
+        for later in (True, False):
+            wins = inside & nearer_or_later(z, 5 if later else 1, old_z, 3)
+            assert out.tolist() == np.where(wins, z, old_z).tolist()
+
+
+@njit
+def fill_row_in_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row):
+    fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row)
+
+
+@njit
+def fill_narrow_rows_tested(f, columns, lo, hi, plane, kk, depth, tri_index):
+    fill_narrow_rows(f, columns, lo, hi, plane, kk, True, True, depth, tri_index)
+
+
+MASKED_STORE = re.compile(r"^\s*(vp?maskmov\w*\s+%[xy]mm\d+,\s*%[xy]mm\d+,\s*[^%\s]*\(|"
+                          r"vmov\w+\s+%[xyz]mm\d+,\s*[^%\s]*\([^)]*\)\s*\{%k)", re.MULTILINE)
+"""A vector store under a mask, in the assembly numba prints (AT&T order: the memory operand last):
+AVX's ``vpmaskmovd``/``vmaskmovps`` to memory, or AVX-512's ``vmovdqu32 …, (…) {%k1}``."""
+
+
+def test_the_depth_tests_vector_loops_store_whole_lanes():
+    """The z-buffer test's vector loops (a span in lanes, a narrow triangle's rows) store whole
+    vectors, the lanes a fragment does not take written back as they were: a masked store is
+    slow on AMD's processors (a microcoded store, and no load after it is forwarded from it).
+    The depth kept is a minimum (:func:`kept_depth`): written as "the old value where the
+    test fails", LLVM dropped that store and masked the rest. On a processor without vector
+    masks there is nothing to find, and the test holds trivially."""
+    depth_row, index_row = np.full(64, DEPTH_CLEAR, np.int32), np.full(64, EMPTY, np.int32)
+    fill_row_in_lanes(3, 40, 0.5, 0.01, 0.25, np.int32(1), depth_row, index_row)
+    assert (index_row[3:41] == 1).all() and (index_row[41:] == EMPTY).all()
+    f = np.array([[0, 0], [8 * SUBPIXEL, 0], [0, 8 * SUBPIXEL]], np.int64)
+    depth, tri_index = np.full((8, 16), DEPTH_CLEAR, np.int32), np.full((8, 16), EMPTY, np.int32)
+    fill_narrow_rows_tested(f, (0, LANES), 0, 7, np.zeros(11), np.int32(1), depth, tri_index)
+    for kernel in (fill_row_in_lanes, fill_narrow_rows_tested):
+        asm = "\n".join(kernel.inspect_asm().values())
+        assert not MASKED_STORE.findall(asm), (kernel.__name__, MASKED_STORE.findall(asm)[:4])
 
 
 _EVERY_SPAN_AS_PYTHON = """
