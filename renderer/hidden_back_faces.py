@@ -47,16 +47,18 @@ from renderer.workspace import empty
 TILE = 16
 """Rows and columns of a tile of the tile z-buffer."""
 
-BACKS_LAST_ROWS = 8
+BACKS_LAST_ROWS = 4
 """The rows a batch's triangles must span on average (:func:`renderer.raster.mean_rows`) for
 the raster to draw its back faces last: for smaller ones the tiles' tests cost more than
 the hidden ones save. Measured, two threads, whole frames, back faces last against in
 order: a 1,024-segment cylinder (127 rows) at 512² 0.78; ico5 at 1024² (19 rows) 0.83;
 but ico7 at 512² (2.5 rows) 1.15–1.18, and the 270k-triangle Igea scan 1.23 (before the
-passes read lists by facing, :mod:`renderer.draw_lists`). With the lists, frames
-alternating in one process (20 pairs), from 4 rows / from 8: ico7 at 1024² (4.9 rows) 0.94
-flat and 0.98 phong, but the level-4 sponge at 1024² (5–6 rows, its holes keep the tiles
-deep) 1.11, the Igea scan 0.99."""
+passes read lists by facing, :mod:`renderer.draw_lists`). With the lists, from 2 rows: ico7
+at 512² 1.00–1.03, the level-4 sponge at 512² (2.9 rows) 0.98 and 1.13. It was 8 until the
+z-buffer's vector loops stored whole lanes (``kept_depth``); since then, from 4 rows against
+from 8, frames alternating in one process (30 pairs, medians): ico7 at 1024² (4.9 rows)
+0.88, 0.91 flat and 0.90 phong, the level-4 sponge at 1024² (5–6 rows) 0.94 and 1.02; its
+raster alone ico7 0.75–0.86, the sponge 0.88–1.00 (docs/performance.md)."""
 
 NO_BATCH = -1
 """The mark of a tile worked out for no batch yet (batches are marked with their first
