@@ -79,7 +79,7 @@ def outside_an_edge(fixed, i0, i1, i2, area, x, y):
     return False
 
 
-LONE_ROWS = 0.6
+LONE_ROWS = 1.5
 """The batch's set-up tests the lone pixel centre of a triangle's box (:data:`renderer.raster.DROP_MISSED_CENTRES`),
 and first drops the triangles whose box holds none by their corners' centre cells
 (:func:`box_misses_centres`, :data:`renderer.raster.DROP_EMPTY_BOXES`),
@@ -93,4 +93,9 @@ test cost the set-up more than it saved the raster. The cells, measured the same
 pairs, medians, the raster stage and the whole frame): the 1M-triangle scan at 512² 0.897
 and 0.934; in batches up to 1.5 rows a triangle, the 270k one at 512² 1.011 and 1.001, and
 frames of ico7 at 512² (2.5 rows) and of the level-4 sponge at 512² (2.9) 1.03: so they go
-with the lone test."""
+with the lone test. It was 0.6 until the z-buffer's vector loops stored whole lanes
+(:func:`renderer.visibility_buffer.kept_depth`); since then, 1.5 against 0.6, whole frames
+alternating in one process (30 pairs, medians, four processes): the 270k scan at 512²
+(0.78–1.06 rows) 0.940–0.987, the 1M one at 1024² (0.66–1.24) 0.970–0.978, and ico7 at 512²,
+whose batches stay above both, 0.991–1.003; at 2.5, ico7 at 512² 1.007 and 1.018
+(docs/performance.md)."""

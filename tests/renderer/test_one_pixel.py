@@ -97,13 +97,14 @@ def test_one_centre_alone_fills_what_a_division_per_row_fills(rule, depth_test):
 def fine_and_coarse(rng, width, height):
     """Batches of 64: triangles of under a pixel, and last eight up to four pixels wide over the
     first eight (a fine batch: fewer rows a triangle than :data:`renderer.pixel_centres.LONE_ROWS`),
-    alternating with a batch holding a few triangles up to eight pixels wide too."""
+    alternating with a batch in which a quarter of the triangles reach up to eight pixels
+    (most of those batches span more rows a triangle than LONE_ROWS, 1.5: coarse)."""
     fine = pixel_sized(rng, 2200, width, height, 0.4)[:2560].reshape(-1, 64, 3, 2)
     fine[:, 1::2] += SUBPIXEL // 2  # about a point between four centres: mostly none in the box
     around = rng.integers(-2 * SUBPIXEL, 2 * SUBPIXEL + 1, (len(fine), 8, 3, 2))
     fine[:, -8:] = fine[:, :8, :1] + around  # last, a few of more centres over the first few
-    larger_ones = pixel_sized(rng, len(fine) * 64, width, height, 4.0)[:len(fine) * 64].reshape(fine.shape)
-    mixed = np.where(rng.random((len(fine), 64, 1, 1)) < 0.1, larger_ones, fine[::-1])
+    larger_ones = pixel_sized(rng, len(fine) * 64, width, height, 8.0)[:len(fine) * 64].reshape(fine.shape)
+    mixed = np.where(rng.random((len(fine), 64, 1, 1)) < 0.25, larger_ones, fine[::-1])
     return np.stack([fine, mixed], 1).reshape(-1, 3, 2)
 
 
