@@ -4,6 +4,7 @@ punctuation dropped, spaces made hyphens, a repeated heading numbered -1, -2, â€
 renamed without its links fails here."""
 from __future__ import annotations
 
+import functools
 import re
 from collections import Counter
 from pathlib import Path
@@ -17,11 +18,12 @@ FENCE = re.compile(r"^```.*?^```", re.S | re.M)
 
 
 def slug(heading: str) -> str:
-    """GitHub's anchor of a heading's text."""
-    text = re.sub(r"[`*_]", lambda m: "_" if m.group() == "_" else "", heading.strip().lower())
-    return re.sub(r"[^\w\- ]", "", text).replace(" ", "-")
+    """GitHub's anchor of a heading's text: lower case, everything but letters, digits, ``_``,
+    ``-`` and spaces dropped, spaces made hyphens."""
+    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
 
 
+@functools.cache
 def anchors(page: Path) -> set[str]:
     """The anchors of every heading of ``page`` (fenced code left out)."""
     seen, out = Counter(), set()

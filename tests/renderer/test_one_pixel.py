@@ -98,7 +98,7 @@ def fine_and_coarse(rng, width, height):
     """Batches of 64: triangles of under a pixel, and last eight up to four pixels wide over the
     first eight (a fine batch: fewer rows a triangle than :data:`renderer.pixel_centres.LONE_ROWS`),
     alternating with a batch in which a quarter of the triangles reach up to eight pixels
-    (most of those batches span more rows a triangle than LONE_ROWS, 1.5: coarse)."""
+    (most of those batches span more rows a triangle than LONE_ROWS: coarse)."""
     fine = pixel_sized(rng, 2200, width, height, 0.4)[:2560].reshape(-1, 64, 3, 2)
     fine[:, 1::2] += SUBPIXEL // 2  # about a point between four centres: mostly none in the box
     around = rng.integers(-2 * SUBPIXEL, 2 * SUBPIXEL + 1, (len(fine), 8, 3, 2))
