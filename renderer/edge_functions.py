@@ -38,6 +38,12 @@ from renderer.visibility_buffer import depth_bits, kept_depth, nearer_or_later
 from renderer.window import SUBPIXEL, SUBPIXEL_BITS
 
 
+LANE_X = np.arange(LANES, dtype=np.float64)
+"""Each lane's column from the group's first, as float64: ``float(start) + LANE_X[i]`` is
+``float(start + i)`` exactly, read as one vector where the conversion of each lane's integer
+column took eight scalar instructions."""
+
+
 @njit(cache=True, inline="always")
 def lanes_start(f, width):
     """The one group of lanes that holds every pixel of the counter-clockwise fixed-point
@@ -94,14 +100,17 @@ def fill_narrow_rows(f, columns, lo, hi, plane, kk, top_left, depth_test, depth,
     e1, c1, r1, bar1 = edge_function(f, 1, start, lo, top_left)
     e2, c2, r2, bar2 = edge_function(f, 2, start, lo, top_left)
     ax, ay, az, zx, zy = plane[6], plane[7], plane[8], plane[9], plane[10]
+    first_x = np.float64(start)
     for row in range(lo, hi + 1):
         z_row = az + zy * (row + 0.5 - ay)
         depth_row, index_row = depth[row], tri_index[row]
+        a0, a1, a2 = e0, e1, e2  # the edge functions at the lane's centre, stepped a column at a time
         for i in range(lanes):
             col = start + i
             at = np.uint64(col)  # unsigned: numba adds no wrap-around for a negative index, which kept loops scalar
-            inside = (e0 + c0 * i > bar0) & (e1 + c1 * i > bar1) & (e2 + c2 * i > bar2)
-            z = depth_bits(z_row + zx * (col + 0.5 - ax))
+            inside = (a0 > bar0) & (a1 > bar1) & (a2 > bar2)
+            z = depth_bits(z_row + zx * (first_x + LANE_X[i] + 0.5 - ax))
+            a0, a1, a2 = a0 + c0, a1 + c1, a2 + c2
             old_z, old_k = depth_row[at], index_row[at]
             nearer = inside & (nearer_or_later(z, kk, old_z, old_k) | (not depth_test))
             depth_row[at] = kept_depth(z, old_z, inside) if depth_test else (z if inside else old_z)

@@ -54,7 +54,7 @@ def kept_depth(z, old_z, inside):
     minimum — with no value "as it was" that the compiler could turn into a store left
     out: a vector loop then stores whole lanes (``vmovdqu``) where it made masked stores
     (``vpmaskmovd``), slow on AMD's processors and never forwarded to the next load."""
-    return smaller(old_z, larger(z, DEPTH_CLEAR * (1 - np.int32(inside))))
+    return smaller(old_z, larger(z, np.int32(DEPTH_CLEAR * (1 - np.int32(inside)))))
 
 
 @njit(cache=True, inline="always")
@@ -75,12 +75,15 @@ def fill_lanes(first, last, z_row, zx, ax, kk, depth_row, index_row):
     start = first - larger(first + lanes - depth_row.shape[0], 0)
     if start < 0:
         start, lanes = first, count
+    column = np.int32(start)  # the columns as int32 as well: a vector of them converts to float64 in one instruction
+    first32, last32 = np.int32(first), np.int32(last)
     for i in range(lanes):
         col = start + i
         at = np.uint64(col)  # unsigned: numba adds no wrap-around for a negative index, which kept this loop scalar
-        z = depth_bits(z_row + zx * (col + 0.5 - ax))
+        z = depth_bits(z_row + zx * (np.float64(column) + 0.5 - ax))
         old_z, old_k = depth_row[at], index_row[at]
-        inside = (col >= first) & (col <= last)
+        inside = (column >= first32) & (column <= last32)
+        column = np.int32(column + 1)
         nearer = nearer_or_later(z, kk, old_z, old_k) & inside
         depth_row[at] = kept_depth(z, old_z, inside)
         index_row[at] = kk if nearer else old_k
