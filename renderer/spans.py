@@ -311,7 +311,7 @@ def span_weights_at(weights, i):
     (each already divided by its clip w) and one over their sum, float32: an attribute
     there is ``(w0·A0 + w1·A1 + w2·A2)·inv``."""
     fl0, fb0, fl1, fb1, fl2, fb2, first = weights
-    x = first + np.float32(i)
+    x = first + np.float32(np.int32(i))  # from int32: eight lanes convert in one instruction (int64: one by one)
     w0, w1, w2 = fl0 + fb0 * x, fl1 + fb1 * x, fl2 + fb2 * x
     return w0, w1, w2, F1 / (w0 + w1 + w2)
 
