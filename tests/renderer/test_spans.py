@@ -16,10 +16,12 @@ from lab.scene import Camera, Image, Light, Material, RenderSettings, Scene, Sce
 from lab.normals import angle_weighted_normals
 from lab.shapes import cube, cylinder, icosphere, quad
 from renderer import RenderOptions, pipeline, render
+from renderer.jit import njit
 from renderer.pipeline import SceneGeometry
 from renderer.shading import EVERYTHING, SPAN_TABLE, fragments, shade, with_span_table
-from renderer.spans import (clipped_vertex, face_toward_viewer, span_setup, span_tcoords, span_texture_corners,
-                            table_weights)
+from renderer.spans import (LANES, clipped_vertex, face_toward_viewer, span_points, span_setup, span_tcoords,
+                            span_texture_corners, table_weights)
+from .assembly import scalar_int64_conversions
 from .single_thread import one_thread
 from .texture_filters import by_definition
 
@@ -354,3 +356,23 @@ def test_a_span_of_half_a_vector_or_more_is_worked_out_in_whole_vectors():
         assert whole_lanes(n) % LANES == 0 and n <= whole_lanes(n) < n + LANES
     points, _, st, _ = span_scratch(37)
     assert points.shape[1] >= whole_lanes(37) and st.shape[1] >= whole_lanes(37)
+
+
+@njit
+def points_of_span(consts, count, points):
+    span_points(consts, False, count, points, 0)
+
+
+def test_a_spans_pixel_offsets_become_floats_a_vector_at_a_time():
+    """The interpolation needs each pixel's offset along the span as a float32: counted as int32,
+    eight lanes convert in one instruction (``vcvtdq2ps``); as int64 (the loop's own index),
+    AVX2 has no vector instruction and converted them one by one. The kernel holds fewer
+    scalar conversions of 64-bit registers than there are lanes."""
+    one = np.float32(1.0)
+    three = (one, one, one)
+    consts = ((one, one, one, one, one, one, one), (three, three, three), (three, three, three), three, one)
+    points = np.zeros((6, 2 * LANES), np.float32)
+    points_of_span(consts, 2 * LANES, points)
+    assert np.isfinite(points).all()
+    conversions = scalar_int64_conversions(points_of_span)
+    assert len(conversions) < LANES, conversions

@@ -18,6 +18,7 @@ from renderer.window import SUBPIXEL
 from renderer.edge_functions import fill_narrow_rows
 from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, clear_band, depth_bits, depth_to_window,
                                         fill_columns, fill_lanes, finish_band, kept_depth, nearer_or_later)
+from .assembly import scalar_int64_conversions
 
 
 @njit
@@ -126,6 +127,23 @@ def test_the_depth_tests_vector_loops_store_whole_lanes():
     for kernel in (fill_row_in_lanes, fill_narrow_rows_tested):
         asm = "\n".join(kernel.inspect_asm().values())
         assert not MASKED_STORE.findall(asm), (kernel.__name__, MASKED_STORE.findall(asm)[:4])
+
+
+def test_the_lanes_columns_become_floats_a_vector_at_a_time():
+    """The depth at a lane's pixel centre needs its column as a float. AVX2 converts int32 lanes
+    to float64 in one instruction (``vcvtdq2pd``) but has none for int64: a column counted as
+    int64 was converted lane by lane, eight scalar ``vcvtsi2sd`` a step. The span loop counts
+    its columns in int32 as well, the narrow triangles' loop adds a table of lane offsets to its
+    first column (the same floats); so each kernel holds fewer scalar conversions of 64-bit
+    registers than there are lanes (those left convert a row or a loop's bounds)."""
+    depth_row, index_row = np.full(64, DEPTH_CLEAR, np.int32), np.full(64, EMPTY, np.int32)
+    fill_row_in_lanes(3, 40, 0.5, 0.01, 0.25, np.int32(1), depth_row, index_row)
+    f = np.array([[0, 0], [8 * SUBPIXEL, 0], [0, 8 * SUBPIXEL]], np.int64)
+    depth, tri_index = np.full((8, 16), DEPTH_CLEAR, np.int32), np.full((8, 16), EMPTY, np.int32)
+    fill_narrow_rows_tested(f, (0, LANES), 0, 7, np.zeros(11), np.int32(1), depth, tri_index)
+    for kernel in (fill_row_in_lanes, fill_narrow_rows_tested):
+        conversions = scalar_int64_conversions(kernel)
+        assert len(conversions) < LANES, (kernel.__name__, conversions)
 
 
 _EVERY_SPAN_AS_PYTHON = """
