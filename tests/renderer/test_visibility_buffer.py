@@ -111,6 +111,18 @@ MASKED_STORE = re.compile(r"^\s*(vp?maskmov\w*\s+%[xy]mm\d+,\s*%[xy]mm\d+,\s*[^%
 AVX's ``vpmaskmovd``/``vmaskmovps`` to memory, or AVX-512's ``vmovdqu32 …, (…) {%k1}``."""
 
 
+def lane_loops_run():
+    """Both vector loops of the depth test compiled and run once (a span of columns 3 … 40 in
+    lanes, a narrow triangle's rows): the kernels whose assembly the tests read, and the
+    span's row of triangle numbers."""
+    depth_row, index_row = np.full(64, DEPTH_CLEAR, np.int32), np.full(64, EMPTY, np.int32)
+    fill_row_in_lanes(3, 40, 0.5, 0.01, 0.25, np.int32(1), depth_row, index_row)
+    f = np.array([[0, 0], [8 * SUBPIXEL, 0], [0, 8 * SUBPIXEL]], np.int64)
+    depth, tri_index = np.full((8, 16), DEPTH_CLEAR, np.int32), np.full((8, 16), EMPTY, np.int32)
+    fill_narrow_rows_tested(f, (0, LANES), 0, 7, np.zeros(11), np.int32(1), depth, tri_index)
+    return (fill_row_in_lanes, fill_narrow_rows_tested), index_row
+
+
 def test_the_depth_tests_vector_loops_store_whole_lanes():
     """The z-buffer test's vector loops (a span in lanes, a narrow triangle's rows) store whole
     vectors, the lanes a fragment does not take written back as they were: a masked store is
@@ -118,13 +130,9 @@ def test_the_depth_tests_vector_loops_store_whole_lanes():
     The depth kept is a minimum (:func:`kept_depth`): written as "the old value where the
     test fails", LLVM dropped that store and masked the rest. On a processor without vector
     masks there is nothing to find, and the test holds trivially."""
-    depth_row, index_row = np.full(64, DEPTH_CLEAR, np.int32), np.full(64, EMPTY, np.int32)
-    fill_row_in_lanes(3, 40, 0.5, 0.01, 0.25, np.int32(1), depth_row, index_row)
+    kernels, index_row = lane_loops_run()
     assert (index_row[3:41] == 1).all() and (index_row[41:] == EMPTY).all()
-    f = np.array([[0, 0], [8 * SUBPIXEL, 0], [0, 8 * SUBPIXEL]], np.int64)
-    depth, tri_index = np.full((8, 16), DEPTH_CLEAR, np.int32), np.full((8, 16), EMPTY, np.int32)
-    fill_narrow_rows_tested(f, (0, LANES), 0, 7, np.zeros(11), np.int32(1), depth, tri_index)
-    for kernel in (fill_row_in_lanes, fill_narrow_rows_tested):
+    for kernel in kernels:
         asm = "\n".join(kernel.inspect_asm().values())
         assert not MASKED_STORE.findall(asm), (kernel.__name__, MASKED_STORE.findall(asm)[:4])
 
@@ -136,12 +144,8 @@ def test_the_lanes_columns_become_floats_a_vector_at_a_time():
     its columns in int32 as well, the narrow triangles' loop adds a table of lane offsets to its
     first column (the same floats); so each kernel holds fewer scalar conversions of 64-bit
     registers than there are lanes (those left convert a row or a loop's bounds)."""
-    depth_row, index_row = np.full(64, DEPTH_CLEAR, np.int32), np.full(64, EMPTY, np.int32)
-    fill_row_in_lanes(3, 40, 0.5, 0.01, 0.25, np.int32(1), depth_row, index_row)
-    f = np.array([[0, 0], [8 * SUBPIXEL, 0], [0, 8 * SUBPIXEL]], np.int64)
-    depth, tri_index = np.full((8, 16), DEPTH_CLEAR, np.int32), np.full((8, 16), EMPTY, np.int32)
-    fill_narrow_rows_tested(f, (0, LANES), 0, 7, np.zeros(11), np.int32(1), depth, tri_index)
-    for kernel in (fill_row_in_lanes, fill_narrow_rows_tested):
+    kernels, _ = lane_loops_run()
+    for kernel in kernels:
         conversions = scalar_int64_conversions(kernel)
         assert len(conversions) < LANES, (kernel.__name__, conversions)
 
