@@ -9,7 +9,8 @@ draws a batch, a block of rows at a time (``deal`` = (n_bands, block_rows): bloc
 to band j mod n_bands; ``rules`` = (rule, depth_test, first_index); ``buffer`` = the
 visibility buffer's ``(depth, tri_index)``),
 
-- **in draw order** (:func:`draw_band_in_order`), every triangle with rows; or
+- **in draw order** (:func:`draw_band_in_order`), every triangle with rows, or those of the
+  band's own list (:func:`draw_band_from_lists`, blocks of :data:`~renderer.bands.BLOCK_ROWS`); or
 - **back faces last** (:func:`draw_band_listed`), with a tile z-buffer
   (:mod:`renderer.hidden_back_faces`): the front faces, then the back faces, each from the
   set-up's lists by facing (:mod:`renderer.draw_lists`), a back face's block of rows
@@ -56,6 +57,21 @@ def draw_band_in_order(b, setup, deal, rules, buffer, fill_stretch, one_pixel=Fa
 
 
 @njit(cache=True, inline="always")
+def draw_band_from_lists(b, setup, deal, rules, buffer, fill_stretch, one_pixel=False):
+    """:func:`draw_band_in_order` from band ``b``'s own list of the set-up's (``band_listed``,
+    :func:`renderer.draw_lists.list_on_bands`, made for the same bands and blocks as ``deal``):
+    the triangles with rows in its blocks, chunk after chunk, in draw order; the band does not
+    read the others' rows. The same stretches, in the same order."""
+    first = np.int64(0)
+    for chunk in range(setup.tallies.shape[0]):
+        for j in range(setup.tallies[chunk, 1 + b]):
+            k = np.int64(setup.band_listed[b, first + j])
+            if not (one_pixel and draw_one_pixel(k, b, setup, deal, rules, buffer)):
+                draw_on_band(k, b, setup, deal, rules, buffer, fill_stretch, UNTESTED, False)
+        first += LIST_CHUNK
+
+
+@njit(cache=True, inline="always")
 def draw_one_pixel(k, b, setup, deal, rules, buffer):
     """Triangle ``k`` when its box holds one pixel centre (one row, :func:`renderer.one_pixel.one_column`):
     that centre drawn by :func:`renderer.one_pixel.fill_one_centre` if its row is band ``b``'s
@@ -64,11 +80,13 @@ def draw_one_pixel(k, b, setup, deal, rules, buffer):
     lo = setup.rows[k, 0]
     if lo != setup.rows[k, 1]:
         return False
+    n_bands, block_rows = deal
+    if first_block_of_band(lo, b, n_bands, block_rows) * block_rows > lo:
+        return True  # its one row is another band's: nothing of it to draw here
     col = one_column(setup.ccw[k], buffer[0].shape[1])
     if col == NOT_ONE_COLUMN:
         return False
-    n_bands, block_rows = deal
-    if col != OUTSIDE_IMAGE and first_block_of_band(lo, b, n_bands, block_rows) * block_rows <= lo:
+    if col != OUTSIDE_IMAGE:
         rule, depth_test, first_index = rules
         fill_one_centre(setup.ccw[k], lo, col, setup.plane[k], np.int32(first_index + k), rule == TOP_LEFT,
                         depth_test, buffer[0], buffer[1])

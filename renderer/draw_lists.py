@@ -1,4 +1,5 @@
-"""A batch's triangles that draw, listed by facing: front faces first, then back faces.
+"""A batch's triangles that draw, listed: by facing (front faces first, then back faces),
+and by band (the triangles each band of the raster draws).
 
 A batch whose back faces are drawn last (:mod:`renderer.hidden_back_faces`) is drawn in
 two passes, its front faces and then its back faces. Each pass used to go over every
@@ -22,6 +23,16 @@ The bands read the lists in :func:`renderer.band_draw.draw_band_listed`; a batch
 backs last is drawn by a loop in draw order, compiled apart (:mod:`renderer.band_draw`).
 Measured: docs/performance.md, "Back faces drawn last from lists, each loop compiled where a
 frame needs it".
+
+**By band** (:func:`list_on_bands`, as the set-up goes, :func:`renderer.raster.set_up_range`):
+each band of the raster's (:mod:`renderer.bands`, blocks of :data:`~renderer.bands.BLOCK_ROWS`
+rows) gets a list of the triangles with rows in its blocks, so a band in draw order reads its
+own triangles only, not every triangle of the batch and its rows
+(:func:`renderer.band_draw.draw_band_from_lists`). Layout: ``band_listed`` (B, K) int32, row b
+band b's list, chunk c's entries in the stretch of its triangles' places (from its start
+forward, in draw order); ``tallies`` (C, 1 + B) int64, column 1 + b how many band b lists
+of chunk c (column 0 is the rows the chunk spans, :class:`renderer.raster.TriangleSetup`).
+A triangle in blocks of several bands is in each of their lists.
 """
 from __future__ import annotations
 
@@ -79,3 +90,31 @@ def listed_triangle(listed, stretch, side, j):
     or back faces (:data:`BACKS`), its stretch of ``listed`` being ``stretch`` = (first, last)."""
     first, last = stretch
     return listed[first + j] if side == FRONTS else listed[last - j]
+
+
+@njit(cache=True, inline="always")
+def list_on_bands(k, lo, hi, first, tally, band_listed, block_rows, per_band):
+    """Note triangle ``k``, whose rows are ``lo`` … ``hi`` (window rows, 0 ≤ lo ≤ hi), in the
+    list of each band that owns one of its blocks of ``block_rows`` rows (block j: band j mod
+    B, B the rows of ``band_listed``): at place ``first`` + its count so far, ``tally[1 + b]``
+    (the chunk's row of ``tallies``), which goes up by one. Branch-free, as :func:`list_triangle`:
+    ``k`` is written at every band's next place and counted where its blocks reach that band
+    (band b is ``(b − top) mod B`` blocks on from its top block's band). The top block's band
+    without a division: ``per_band`` = 1 / B (:func:`block_band`)."""
+    n_bands = band_listed.shape[0]
+    top = lo // block_rows
+    reach = hi // block_rows - top  # blocks after its top one
+    top_band = block_band(top, n_bands, per_band)
+    for b in range(n_bands):
+        ahead = b - top_band + (n_bands if b < top_band else 0)
+        band_listed[b, first + tally[1 + b]] = np.int32(k)
+        tally[1 + b] += np.int64(ahead <= reach)
+
+
+@njit(cache=True, inline="always")
+def block_band(block, n_bands, per_band):
+    """``block mod n_bands`` for 0 ≤ block < 2³¹ by a multiplication with ``per_band`` = 1 /
+    n_bands: the quotient ⌊(block + ½) / n_bands⌋ is exact, as (block + ½) / n_bands lies at
+    least 1 / (2·n_bands) from an integer, far more than the product's rounding. (A 64-bit
+    division a triangle made the level-4 sponge's set-up at 512² 1.5–3.8 ms slower.)"""
+    return block - n_bands * np.int64((block + 0.5) * per_band)

@@ -31,7 +31,8 @@ from renderer.free_cores import threads_of_this_frame
 from renderer.lights import view_lights
 from renderer.lit_colours import lit_colours
 from renderer.painter import painter_order
-from renderer.raster import BATCH, IndexedTriangles, rasterize_visibility, weight_planes
+from renderer.indexed_triangles import IndexedTriangles
+from renderer.raster import BATCH, rasterize_visibility, weight_planes
 from renderer.reflection.materials import any_face_colour, any_flat
 from renderer.reflection.registry import material_table
 from renderer.plane_normals import face_normals, face_normals_of

@@ -50,15 +50,16 @@ from renderer.clip import CornerIndex, corner_row
 from renderer.bands import BLOCK_ROWS, one_band_at_a_time, raster_bands
 from renderer.visibility_buffer import (DEPTH_CLEAR, DEPTH_MAX, EMPTY, Visibility, clear_band, clear_visibility,
                                         depth_bits, depth_to_window, fill_columns, finish_band)
-from renderer.band_draw import draw_band_in_order, draw_band_listed
-from renderer.draw_lists import LIST_CHUNK, list_by_facing
+from renderer.band_draw import draw_band_from_lists, draw_band_in_order, draw_band_listed
+from renderer.draw_lists import LIST_CHUNK, list_by_facing, list_on_bands
 from renderer.edge_functions import fill_narrow_rows, lanes_start
 from renderer.edge_walk import edge_walk, fill_walked, split_at_middle
 from renderer.fill_rules import FILL_RULES, TOP_LEFT
 from renderer.hidden_back_faces import BACKS_LAST_ROWS, NO_TILES, new_tiles
 from renderer.pixel_centres import LONE_ROWS, box_misses_centres, ceil_div, centre_rows
-from renderer.window import NO_CELLS, SUBPIXEL, WindowVertices, centre_cells, signed_area_corners, window_edges
+from renderer.window import NO_CELLS, SUBPIXEL, WindowVertices, signed_area_corners, window_edges
 from renderer.workspace import empty
+from renderer.indexed_triangles import IndexedTriangles, whole_triangles
 
 
 class TriangleSetup(NamedTuple):
@@ -73,18 +74,27 @@ class TriangleSetup(NamedTuple):
     — then the depth plane ax, ay, az, zx, zy (:func:`depth_plane`). A triangle that draws
     nothing (no area, culled, or no pixel centre it can cover: :mod:`renderer.pixel_centres`)
     gets no rows, ``ccw`` or depth plane (nor weights, when its centre cells dropped it).
-    row_sums (C,) int64: for each chunk of :data:`SETUP_CHUNK` triangles the rows they span
-    together (for :func:`mean_rows`). listed (K,) int32, counts (⌈K / LIST_CHUNK⌉, 2) int64: for back faces
-    drawn last, the triangles that draw by facing (:func:`renderer.draw_lists.list_by_facing`).
+    listed (K,) int32, counts (⌈K / LIST_CHUNK⌉, 2) int64: for back faces drawn last, the
+    triangles that draw by facing (:func:`renderer.draw_lists.list_by_facing`). band_listed (B,
+    K) int32: for each of the B bands the batch is drawn in, the triangles with rows in its
+    blocks (:func:`renderer.draw_lists.list_on_bands`); tallies (C, 1 + B) int64, for each
+    chunk of :data:`SETUP_CHUNK` triangles the rows they span together (column 0,
+    ``row_sums``, for :func:`mean_rows`) and how many each band lists (column 1 + b).
     """
 
     front: np.ndarray
     ccw: np.ndarray
     rows: np.ndarray
     plane: np.ndarray
-    row_sums: np.ndarray
     listed: np.ndarray
     counts: np.ndarray
+    band_listed: np.ndarray
+    tallies: np.ndarray
+
+    @property
+    def row_sums(self) -> np.ndarray:
+        """Each chunk's rows, ``tallies[:, 0]`` (a view)."""
+        return self.tallies[:, 0]
 
 
 @njit(cache=True, inline="always")
@@ -152,8 +162,9 @@ def weights_plane(window, i0, i1, i2, plane):
     plane[0], plane[1], plane[2], plane[3], plane[4], plane[5] = window_edges(window, i0, i1, i2)
 
 
-SETUP_CHUNK = np.uint64(1024)
-"""Triangles a parallel iteration of :func:`setup_triangles` sets up (:func:`set_up_range`)."""
+SETUP_CHUNK = np.uint64(LIST_CHUNK)
+"""Triangles a parallel iteration of :func:`setup_triangles` sets up (:func:`set_up_range`): a
+chunk of the bands' lists, which it writes (:mod:`renderer.draw_lists`)."""
 
 
 DROP_BACK_FACES, DROP_MISSED_CENTRES, DROP_EMPTY_BOXES = 1, 2, 4
@@ -165,10 +176,10 @@ no rows, and no area, facing (False) or weights' plane worked out (docs/performa
 
 
 @njit(cache=True, parallel=True)
-def setup_triangles(corners, vertices, height, drops, front, ccw, rows, plane, row_sums):
+def setup_triangles(corners, vertices, height, drops, front, ccw, rows, plane, band_listed, tallies):
     """Per-triangle set-up, once: facing, counter-clockwise fixed vertices, rows, planes, into
-    ``front``, ``ccw``, ``rows`` and ``plane``, and each chunk's rows into ``row_sums`` (see
-    :class:`TriangleSetup`). The triangles' corners are rows (``corners``, a
+    ``front``, ``ccw``, ``rows`` and ``plane``, the triangles with rows into each band's list
+    ``band_listed``, and each chunk's rows and counts into ``tallies`` (see :class:`TriangleSetup`). The triangles' corners are rows (``corners``, a
     :class:`~renderer.clip.CornerIndex`) of the vertex tables ``vertices``
     (:class:`renderer.window.WindowVertices`). ``drops`` (bits): with :data:`DROP_EMPTY_BOXES`
     a triangle whose corners' centre cells show a box without pixel centres gets no rows
@@ -179,15 +190,18 @@ def setup_triangles(corners, vertices, height, drops, front, ccw, rows, plane, r
     call of :func:`set_up_range`: numba's parallel passes then type a one-line loop body
     again, not the whole set-up (a cold start's compile 0.25 s less, the same frames)."""
     for chunk in prange((np.uint64(corners.source.shape[0]) + SETUP_CHUNK - 1) // SETUP_CHUNK):
-        row_sums[chunk] = set_up_range(np.uint64(chunk), corners, vertices, height, drops, front, ccw, rows, plane)
+        tallies[chunk, 0] = set_up_range(np.uint64(chunk), corners, vertices, height, drops, front, ccw, rows, plane,
+                                         (band_listed, tallies[chunk]))
 
 
 @njit(cache=True, from_python=False, refcounts=False)
-def set_up_range(chunk, corners, vertices, height, drops, front, ccw, rows, plane):
+def set_up_range(chunk, corners, vertices, height, drops, front, ccw, rows, plane, lists):
     """:func:`setup_triangles` for chunk ``chunk`` (uint64; the same type in the loop numba
     types twice, so one compile): triangles ``chunk · SETUP_CHUNK`` … up to ``SETUP_CHUNK``
     more, counted as uint64, as the parallel loop's own index is (a signed index costs every
     array read a test for a negative value: measured 4 % slower). Returns the rows they span.
+    ``lists`` = (``band_listed``, the chunk's row of ``tallies``): each triangle with rows is
+    listed for the bands of its blocks (:func:`renderer.draw_lists.list_on_bands`).
     A triangle that draws nothing (no area, culled, no pixel centre) gets no rows, and
     neither its depth plane nor its counter-clockwise corners.
 
@@ -198,6 +212,10 @@ def set_up_range(chunk, corners, vertices, height, drops, front, ccw, rows, plan
     first = chunk * SETUP_CHUNK
     spanned = 0
     fixed, window, cells = vertices
+    band_listed, tally = lists
+    per_band = 1.0 / band_listed.shape[0]  # for list_on_bands
+    for b in range(1, tally.shape[0]):
+        tally[b] = 0
     for k in range(first, smaller(first + SETUP_CHUNK, np.uint64(corners.source.shape[0]))):
         i0, i1, i2 = corner_row(corners, k, 0), corner_row(corners, k, 1), corner_row(corners, k, 2)
         if drops & DROP_EMPTY_BOXES and box_misses_centres(cells[i0], cells[i1], cells[i2]):
@@ -217,6 +235,7 @@ def set_up_range(chunk, corners, vertices, height, drops, front, ccw, rows, plan
                 i1, i2 = i2, i1
             for c in range(2):
                 ccw[k, 0, c], ccw[k, 1, c], ccw[k, 2, c] = fixed[i0, c], fixed[i1, c], fixed[i2, c]
+            list_on_bands(k, lo, hi, np.int64(first), tally, band_listed, BLOCK_ROWS, per_band)
         spanned += larger(hi - lo + 1, 0)
     return spanned
 
@@ -379,7 +398,7 @@ def band_dividing(b, setup, n_bands, rule, depth_test, first_index, ends, depth,
         clear_band(b, n_bands, BLOCK_ROWS, depth, tri_index)
     deal, rules, buffer = (n_bands, BLOCK_ROWS), (rule, depth_test, first_index), (depth, tri_index)
     if tiles is None:  # known from the type of ``tiles`` as numba compiles: one branch is compiled
-        draw_band_in_order(b, setup, deal, rules, buffer, fill_rows_dividing, ends & FINE_BATCH != 0)
+        draw_band_from_lists(b, setup, deal, rules, buffer, fill_rows_dividing, ends & FINE_BATCH != 0)
     else:
         draw_band_listed(b, setup, deal, rules, buffer, fill_rows_dividing, tiles)
 
@@ -407,12 +426,13 @@ in draw order only; the walking kernel's batches are never fine)."""
 
 
 @njit(cache=True, parallel=True)
-def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, covered, tiles):
+def rasterize(setup, rule, depth_test, first_index, ends, depth, tri_index, covered, tiles):
     """Scan-convert every triangle of ``setup`` into the visibility buffer (the loop kernel).
 
-    The image's rows are dealt out to ``n_bands`` bands in blocks of
+    The image's rows are dealt out to the bands the set-up listed the triangles for (as many
+    as ``setup.band_listed`` has rows, :func:`set_up_corners`) in blocks of
     :data:`renderer.bands.BLOCK_ROWS` rows (:mod:`renderer.bands`), filled in parallel; each
-    band draws *every* triangle in order, on its own rows only (after clearing them, for the
+    band draws the triangles with rows in its blocks (its list) in order, on its own rows only (after clearing them, for the
     first batch: ``ends`` has :data:`FIRST_BATCH`). A pixel belongs to one band and sees the
     triangles in draw order, so the result is the same, bit for bit, as a serial loop
     (z-buffer ties included), also with a tile z-buffer ``tiles``: back faces last
@@ -430,6 +450,7 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_in
     of each pixel. The outputs are plain arrays: numba loses writes made through a
     NamedTuple's fields inside ``prange`` (numba issues #5872, #7135); ``setup`` is only read.
     """
+    n_bands = setup.band_listed.shape[0]
     for b in prange(n_bands):
         band_dividing(np.int64(b), setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, tiles)
         if ends & LAST_BATCH:
@@ -437,9 +458,11 @@ def rasterize(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_in
 
 
 @njit(cache=True, parallel=True)
-def rasterize_walking(setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, covered, tiles):
+def rasterize_walking(setup, rule, depth_test, first_index, ends, depth, tri_index, covered, tiles):
     """:func:`rasterize`, each span found by walking the triangle's edges (:func:`fill_rows`):
-    the same pixels, quicker for tall triangles (:data:`TALL_ROWS`)."""
+    the same pixels, quicker for tall triangles (:data:`TALL_ROWS`), in as many bands (each
+    goes over every triangle, as the set-up's lists are for the other kernel's blocks)."""
+    n_bands = setup.band_listed.shape[0]
     for b in prange(n_bands):
         band_walking(np.int64(b), setup, n_bands, rule, depth_test, first_index, ends, depth, tri_index, tiles)
         if ends & LAST_BATCH:
@@ -460,73 +483,37 @@ BATCH = 1 << 15
 """Triangles set up and drawn at a time: the set-up tables stay this long (about 5 MB)."""
 
 
-class IndexedTriangles(NamedTuple):
-    """Triangles as rows of vertex tables: ``corners`` (:class:`~renderer.clip.CornerIndex`)
-    says where the triangles' corners are in ``fixed`` (M, 2) int64, x and y on the
-    1/256-pixel grid, ``window`` (M, 3), window space (:mod:`renderer.window`), and
-    ``cells`` (M,) int64, the vertices' centre cells (:func:`renderer.window.centre_cell`;
-    the set-up drops a triangle whose box holds no pixel centre from them, :data:`DROP_EMPTY_BOXES`)."""
-
-    corners: CornerIndex
-    fixed: np.ndarray
-    window: np.ndarray
-    cells: np.ndarray
-
-    @property
-    def vertices(self) -> WindowVertices:
-        """The vertex tables, as the set-up reads them."""
-        return WindowVertices(self.fixed, self.window, self.cells)
-
-    @property
-    def count(self) -> int:
-        """How many triangles."""
-        return len(self.corners.source)
-
-
-def whole_triangles(tri_fixed: np.ndarray, tri_window: np.ndarray, with_cells: bool = True) -> IndexedTriangles:
-    """Per-triangle tables (K, 3, 2) and (K, 3, 3) as :class:`IndexedTriangles`: triangle k's
-    corners on rows 3k, 3k + 1, 3k + 2 of their vertex tables (3K, 2) and (3K, 3), with their
-    centre cells unless ``with_cells`` is False (then :data:`~renderer.window.NO_CELLS`)."""
-    tri_fixed = np.ascontiguousarray(tri_fixed, dtype=np.int64).reshape(-1, 3, 2)
-    tri_window = np.ascontiguousarray(tri_window, dtype=np.float64).reshape(-1, 3, 3)
-    if len(tri_fixed) != len(tri_window):
-        raise ValueError("tri_fixed and tri_window must hold the same triangles")
-    fixed = tri_fixed.reshape(-1, 2)
-    cells = np.empty(len(fixed), np.int64) if with_cells else NO_CELLS
-    if with_cells and len(fixed):
-        centre_cells(fixed, cells)
-    return IndexedTriangles(CornerIndex.of_whole(len(tri_fixed)), fixed, tri_window.reshape(-1, 3), cells)
-
-
 def set_up_corners(corners: CornerIndex, vertices: WindowVertices, height: int, cull_back: bool, ws=None,
-                   name="raster", lone_test: bool = False) -> TriangleSetup:
+                   name="raster", lone_test: bool = False, n_bands: int = 1) -> TriangleSetup:
     """Allocate (in workspace ``ws`` under ``name``) and run :func:`setup_triangles` on the
     triangles whose corners ``corners`` names among the rows of ``vertices``
     (:class:`renderer.window.WindowVertices`); those whose box holds no pixel centre are
     dropped first from the vertices' cells when they come with them (:data:`DROP_EMPTY_BOXES`);
-    ``lone_test``: drop those whose box's lone pixel centre is outside (:data:`DROP_MISSED_CENTRES`)."""
+    ``lone_test``: drop those whose box's lone pixel centre is outside (:data:`DROP_MISSED_CENTRES`);
+    ``n_bands``: the bands the raster draws them in (their lists, ``band_listed``)."""
     k_count = len(corners.source)
     chunks, lists = -(-k_count // int(SETUP_CHUNK)), -(-k_count // LIST_CHUNK)
+    tallies = empty(ws, f"{name}.tallies", (chunks, 1 + n_bands), np.int64)
     setup = TriangleSetup(front=empty(ws, f"{name}.front", k_count, np.bool_),
                           ccw=empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64),
                           rows=empty(ws, f"{name}.rows", (k_count, 2), np.int64),
                           plane=empty(ws, f"{name}.plane", (k_count, 11)),
-                          row_sums=empty(ws, f"{name}.row_sums", chunks, np.int64),
                           listed=empty(ws, f"{name}.listed", k_count, np.int32),
-                          counts=empty(ws, f"{name}.counts", (lists, 2), np.int64))
+                          counts=empty(ws, f"{name}.counts", (lists, 2), np.int64),
+                          band_listed=empty(ws, f"{name}.band_listed", (n_bands, k_count), np.int32), tallies=tallies)
     drops = ((DROP_BACK_FACES if cull_back else 0) | (DROP_MISSED_CENTRES if lone_test else 0)
              | (DROP_EMPTY_BOXES if len(vertices.cells) else 0))
-    setup_triangles(corners, vertices, height, drops, *setup[:5])
+    setup_triangles(corners, vertices, height, drops, *setup[:4], setup.band_listed, tallies)
     return setup
 
 
 def set_up(tri_fixed: np.ndarray, tri_window: np.ndarray, height: int, cull_back: bool, ws=None,
-           name="raster", lone_test: bool = False) -> TriangleSetup:
+           name="raster", lone_test: bool = False, n_bands: int = 1) -> TriangleSetup:
     """:func:`set_up_corners` of triangles given whole: (K, 3, 2) fixed and (K, 3, 3) window corners;
     every triangle's facing and weights' plane worked out (no centre cells: the translucent
     pass reads them all)."""
     whole = whole_triangles(tri_fixed, tri_window, with_cells=False)
-    return set_up_corners(whole.corners, whole.vertices, height, cull_back, ws, name, lone_test)
+    return set_up_corners(whole.corners, whole.vertices, height, cull_back, ws, name, lone_test, n_bands)
 
 
 def mean_rows(setup: TriangleSetup) -> float:
@@ -566,7 +553,8 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     for a in range(0, count, step):
         corners = triangles.corners.batch(a, min(a + step, count))
         vertices = triangles.vertices if span < LONE_ROWS else triangles.vertices._replace(cells=NO_CELLS)
-        setup = set_up_corners(corners, vertices, height, cull_back, ws, "raster", lone_test=span < LONE_ROWS)
+        setup = set_up_corners(corners, vertices, height, cull_back, ws, "raster", lone_test=span < LONE_ROWS,
+                               n_bands=bands)
         with one_band_at_a_time():
             span = mean_rows(setup)  # chooses the kernel, the order and the next batch's test, never the pixels
             kernel = rasterize_walking if span >= TALL_ROWS else rasterize
@@ -575,7 +563,7 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
             behind = tiles if span >= BACKS_LAST_ROWS else NO_TILES
             if behind is not NO_TILES:
                 list_by_facing(setup.rows, setup.front, setup.listed, setup.counts)
-            kernel(setup, bands, rule, bool(depth_test), a, ends, depth, tri_index, covered, behind)
+            kernel(setup, rule, bool(depth_test), a, ends, depth, tri_index, covered, behind)
     return Visibility(depth, tri_index, covered)
 
 

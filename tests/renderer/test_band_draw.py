@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from renderer.band_draw import draw_band_in_order, draw_band_listed
+from renderer.band_draw import draw_band_from_lists, draw_band_in_order, draw_band_listed
 from renderer.bands import BLOCK_ROWS
 from renderer.draw_lists import list_by_facing
 from renderer.hidden_back_faces import NO_TILES, new_tiles
@@ -40,6 +40,14 @@ def band_log(b, n_bands, setup, tiles, depth, log):
         draw_band_in_order(b, setup, deal, rules, buffer, log_stretch)
     else:
         draw_band_listed(b, setup, deal, rules, buffer, log_stretch, tiles)
+    return log[1:log[0, 0] + 1].copy()
+
+
+@njit(cache=False)
+def band_log_from_lists(b, n_bands, setup, depth, log):
+    """Band ``b``'s stretches drawn from its own list (as the dividing kernel draws)."""
+    log[0, 0] = 0
+    draw_band_from_lists(b, setup, (n_bands, BLOCK_ROWS), (0, True, 0), (depth, log), log_stretch)
     return log[1:log[0, 0] + 1].copy()
 
 
@@ -75,6 +83,20 @@ def test_without_tiles_a_band_draws_every_triangle_with_rows_in_draw_order(batch
     setup, drawn = batch
     for b, got in enumerate(run(setup, NO_TILES, n_bands)):
         assert got == blocks_of(setup, np.flatnonzero(drawn), b, n_bands)
+
+
+@pytest.mark.parametrize("n_bands", [1, 2, 3])
+def test_from_its_list_a_band_draws_the_same_stretches_in_the_same_order(n_bands):
+    """The set-up's list of each band's triangles (made for these bands): the band asks for
+    what it asks for going over every triangle, in the same order."""
+    fixed, window = soup(np.random.default_rng(5), 1500, WIDTH, HEIGHT)
+    setup = set_up(fixed, window, HEIGHT, False, n_bands=n_bands)
+    drawn = setup.rows[:, 0] <= setup.rows[:, 1]
+    depth = np.zeros((HEIGHT, WIDTH), np.int32)
+    log = np.zeros((2 * len(setup.front) * (HEIGHT // BLOCK_ROWS + 2), 3), np.int32)
+    for b in range(n_bands):
+        got = [tuple(row) for row in band_log_from_lists(b, n_bands, setup, depth, log)]
+        assert got == blocks_of(setup, np.flatnonzero(drawn), b, n_bands) and len(got) > 100
 
 
 @pytest.mark.parametrize("n_bands", [1, 3])

@@ -1,14 +1,19 @@
 """A batch's triangles that draw, listed by facing (renderer/draw_lists.py): exactly the ones
 with rows, chunk by chunk, front faces and back faces apart, each in draw order; and the
-raster drawing its back faces last from the lists fills the buffer one pass in order fills."""
+raster drawing its back faces last from the lists fills the buffer one pass in order fills.
+Listed by band, as the set-up writes them: each band's list holds exactly the triangles with
+rows in its blocks, chunk by chunk, in draw order."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from renderer.draw_lists import BACKS, FRONTS, LIST_CHUNK, chunk_stretch, list_by_facing, list_triangle, listed_triangle
+from renderer.bands import BLOCK_ROWS
+from renderer.draw_lists import (BACKS, FRONTS, LIST_CHUNK, block_band, chunk_stretch, list_by_facing, list_triangle,
+                                 listed_triangle)
 from renderer.jit import njit
-from renderer.raster import rasterize_visibility, set_up, whole_triangles
+from renderer.raster import rasterize_visibility, set_up
+from renderer.indexed_triangles import whole_triangles
 
 from .test_hidden_back_faces import soup
 
@@ -96,3 +101,46 @@ def test_back_faces_last_from_the_lists_fill_the_buffer_drawing_in_order_fills(m
         listed.clear()
         np.testing.assert_array_equal(last.tri_index, in_order.tri_index)
         np.testing.assert_array_equal(last.depth, in_order.depth)
+
+
+def band_lists(setup):
+    """Each band's list read back from the set-up: the triangles of every chunk, in order."""
+    n_bands = setup.band_listed.shape[0]
+    return [[int(setup.band_listed[b, c * LIST_CHUNK + j]) for c in range(len(setup.tallies))
+             for j in range(setup.tallies[c, 1 + b])] for b in range(n_bands)]
+
+
+def owners(lo, hi, n_bands):
+    """The bands that own a block of rows lo … hi (block j: band j mod n_bands)."""
+    return {block % n_bands for block in range(lo // BLOCK_ROWS, hi // BLOCK_ROWS + 1)}
+
+
+@pytest.mark.parametrize("n_bands", [1, 2, 3, 5])
+def test_each_band_lists_the_triangles_with_rows_in_its_blocks_in_draw_order(n_bands):
+    """2,500 triangles (three chunks) of a soup over 8 blocks of rows, some tall enough to reach
+    every band, some in one block, many with no rows: band b's list is exactly, in draw order,
+    the triangles with a row in a block of band b, whatever the number of bands."""
+    fixed, window = soup(np.random.default_rng(11), 2500, 70, 8 * BLOCK_ROWS + 5)
+    fixed[:40, 2, 1] = fixed[:40, 0, 1] + 7 * BLOCK_ROWS * 256  # tall: blocks of every band
+    window[:40, 2, 1] = fixed[:40, 2, 1] / 256 + 0.5
+    setup = set_up(fixed, window, 8 * BLOCK_ROWS + 5, False, n_bands=n_bands)
+    rows = setup.rows
+    drawn = rows[:, 0] <= rows[:, 1]
+    assert len(setup.tallies) == 3 and 50 < (~drawn).sum() and (rows[:, 1] - rows[:, 0] >= 4 * BLOCK_ROWS).sum() > 10
+    expected = [[k for k in np.flatnonzero(drawn) if b in owners(rows[k, 0], rows[k, 1], n_bands)]
+                for b in range(n_bands)]
+    assert band_lists(setup) == expected
+
+
+@njit(cache=False)
+def bands_of_blocks(blocks, n_bands):
+    return [block_band(block, n_bands, 1.0 / n_bands) for block in blocks]
+
+
+@pytest.mark.parametrize("n_bands", [1, 2, 3, 7, 49, 64, 103, 1000])
+def test_a_block_s_band_by_the_reciprocal_is_the_remainder(n_bands):
+    """block_band (a multiplication by 1 / B) is block mod B for every block below 2¹⁸ and
+    for the largest ones it is asked of (up to 2³¹); among the B, 49 and 103, where block · (1 / B)
+    falls below the quotient for some multiples of B (without the half block's margin)."""
+    blocks = np.concatenate([np.arange(1 << 18), np.arange((1 << 31) - 5000, 1 << 31)]).astype(np.int64)
+    np.testing.assert_array_equal(bands_of_blocks(blocks, n_bands), blocks % n_bands)

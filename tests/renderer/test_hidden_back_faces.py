@@ -44,7 +44,8 @@ def test_back_faces_drawn_last_fill_the_buffer_drawing_in_order_fills(monkeypatc
     kernels (small and tall triangles) and with the batches each set up apart; and the tiles
     were consulted."""
     from renderer import raster
-    from renderer.raster import rasterize_visibility, whole_triangles
+    from renderer.raster import rasterize_visibility
+    from renderer.indexed_triangles import whole_triangles
     from renderer.workspace import Workspace
 
     monkeypatch.setattr(raster, "BACKS_LAST_ROWS", 0)  # every batch, small triangles too
@@ -70,7 +71,8 @@ def test_the_floor_is_no_deeper_than_any_fragment_of_the_triangle():
     """fragment_depth_floor is at or below the depth of every pixel each of 400 triangles
     (steep ones included) draws alone, and close to the nearest of them."""
     from renderer.hidden_back_faces import fragment_depth_floor
-    from renderer.raster import rasterize_visibility, set_up, whole_triangles
+    from renderer.raster import rasterize_visibility, set_up
+    from renderer.indexed_triangles import whole_triangles
 
     fixed, window = soup(np.random.default_rng(7), 400, 40, 30)
     setup = set_up(fixed, window, 30, False)
@@ -167,7 +169,7 @@ def test_a_back_face_the_tiles_call_hidden_is_not_drawn(walking):
 
     width, height = 70, 53
     fixed, window = soup(np.random.default_rng(3), 200, width, height)
-    setup = set_up(fixed, window, height, False)
+    setup = set_up(fixed, window, height, False, n_bands=raster_bands(height))
     list_by_facing(setup.rows, setup.front, setup.listed, setup.counts)
     kernel = rasterize_walking if walking else rasterize
     shown = {}
@@ -176,7 +178,7 @@ def test_a_back_face_the_tiles_call_hidden_is_not_drawn(walking):
         if tiles is not NO_TILES:
             tiles[0], tiles[1] = -1, 0  # every tile "worked out" for batch 0, nearer than any fragment
         depth, tri_index = np.empty((height, width), np.int32), np.empty((height, width), np.int32)
-        kernel(setup, raster_bands(height), 0, True, 0, FIRST_BATCH | LAST_BATCH, depth, tri_index,
+        kernel(setup, 0, True, 0, FIRST_BATCH | LAST_BATCH, depth, tri_index,
                np.empty((height, width), np.bool_), tiles)
         won = np.unique(tri_index[tri_index >= 0])
         shown[case] = (setup.front[won].sum(), (~setup.front[won]).sum())

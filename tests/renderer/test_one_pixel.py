@@ -13,7 +13,8 @@ from renderer import raster
 from renderer.fill_rules import FILL_RULES, TOP_LEFT
 from renderer.jit import njit
 from renderer.one_pixel import NOT_ONE_COLUMN, OUTSIDE_IMAGE, fill_one_centre, one_column
-from renderer.raster import fill_row, set_up, whole_triangles
+from renderer.raster import fill_row, set_up
+from renderer.indexed_triangles import whole_triangles
 from renderer.window import SUBPIXEL
 
 from .pixel_soups import same_buffer_both_ways, window_of

@@ -370,7 +370,8 @@ def test_drawing_in_batches_fills_the_buffer_one_pass_fills(batch, depth_test):
     """The 80 overlapping triangles (ties included) drawn ``batch`` at a time, each batch set up
     and filled over what the ones before it left: the depth and triangle of every pixel are
     those of one pass over all of them, z-buffer on or off."""
-    from renderer.raster import rasterize_visibility, whole_triangles
+    from renderer.raster import rasterize_visibility
+    from renderer.indexed_triangles import whole_triangles
 
     width, height = 37, 29
     rng = np.random.default_rng(11)
@@ -497,7 +498,8 @@ def test_the_frame_coverage_is_the_finished_buffer_compared(tall, batch, n_bands
     each band after the last batch only, on every row (the empty ones, and the last block
     cut short: 3 bands of 16- or 64-row blocks over 71 rows), by the dividing and the walking
     kernel; the depth of empty pixels is the clear value, window depth 1.0."""
-    from renderer.raster import EMPTY, depth_to_window, rasterize_visibility, whole_triangles
+    from renderer.raster import EMPTY, depth_to_window, rasterize_visibility
+    from renderer.indexed_triangles import whole_triangles
 
     width, height = 23, 71
     rng = np.random.default_rng(4)
@@ -517,7 +519,8 @@ def test_the_frame_coverage_is_the_finished_buffer_compared(tall, batch, n_bands
 
 def test_an_empty_scene_has_an_empty_frame_depth_and_coverage():
     """No triangles: one pass clears the buffer and finishes it, depth 1.0 and nothing covered."""
-    from renderer.raster import depth_to_window, rasterize_visibility, whole_triangles
+    from renderer.raster import depth_to_window, rasterize_visibility
+    from renderer.indexed_triangles import whole_triangles
 
     vis = rasterize_visibility(whole_triangles(np.zeros((0, 3, 2), np.int64), np.zeros((0, 3, 3))), 9, 5)
     assert (depth_to_window(vis.depth) == 1.0).all() and not vis.covered.any()
@@ -563,12 +566,12 @@ def test_the_walking_kernel_fills_the_buffers_the_dividing_one_fills(rule, depth
     z = np.where(rng.random((len(fixed), 1)) < 0.5, 0.5, rng.uniform(0, 1, (len(fixed), 3)))
     z[len(small):] = np.where(rng.random((40, 1)) < 0.5, 0.1, rng.uniform(0, 0.2, (40, 3)))  # in front, ties among them
     window = np.concatenate([fixed / SUBPIXEL + 0.5, z[..., None] * np.ones((len(fixed), 3, 1))], axis=2)
-    setup = set_up(fixed, window, height, False)
+    setup = set_up(fixed, window, height, False, n_bands=raster_bands(height, 3))
     buffers = []
     for kernel in (rasterize, rasterize_walking):
         depth, tri_index = np.empty((height, width), np.int32), np.empty((height, width), np.int32)
         covered = np.empty((height, width), np.bool_)
-        kernel(setup, raster_bands(height, 3), FILL_RULES[rule], depth_test, 0, FIRST_BATCH | LAST_BATCH, depth,
+        kernel(setup, FILL_RULES[rule], depth_test, 0, FIRST_BATCH | LAST_BATCH, depth,
                tri_index, covered, NO_TILES)
         buffers.append((depth, tri_index))
     np.testing.assert_array_equal(buffers[1][1], buffers[0][1])
@@ -638,7 +641,8 @@ def test_no_triangles_leave_the_buffer_a_culled_triangle_leaves(depth_test):
     """A frame with nothing to draw (a scene of translucent objects only) gets the clear buffer
     without running the kernels: the same depth, triangles and coverage as the kernels leave
     when their only triangle is a culled back face."""
-    from renderer.raster import rasterize_visibility, whole_triangles
+    from renderer.raster import rasterize_visibility
+    from renderer.indexed_triangles import whole_triangles
 
     fixed, window = triangles([(1, 1), (1, 5), (5, 1)])  # clockwise: a back face
     culled = rasterize_visibility(whole_triangles(fixed, window), 9, 7, depth_test=depth_test, cull_back=True)
