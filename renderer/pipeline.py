@@ -410,8 +410,9 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     shade(frags, geo, inputs, to_8bit(np.asarray(scene.image.background)), rgb, spans=options.spans, reads=reads)
     coverage = vis.covered
     if translucent.any():
-        coverage = coverage | draw_translucent(clipped.take(translucent).written_out(), vis.depth, rgb, geo, inputs,
-                                               scene.render.transparency, perspective, rules, ws, options.spans)
+        cover = draw_translucent(clipped.take(translucent).written_out(), vis.depth, rgb, geo, inputs,
+                                 scene.render.transparency, perspective, rules, ws, options.spans)  # a fresh array
+        coverage = np.logical_or(coverage, cover, out=cover) if opaque.count else cover
     frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=partial(image_depth, vis.depth),
                   coverage=window_rows_to_image_rows(coverage))
     if not keep_stages:

@@ -14,7 +14,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from renderer.jit import njit
+from renderer.jit import njit, prange
 from renderer.min_max import clamp, larger, smaller
 from renderer.spans import round_up_to_lanes
 
@@ -167,5 +167,16 @@ def clear_visibility(tri_index: np.ndarray) -> Visibility:
     workspace's) and nothing covered. The buffers the raster's kernels leave when they draw
     no triangle, filled by numpy without setting up an empty batch and starting the
     threads (a frame of translucent objects only: 0.2 ms of the raster and its glue)."""
-    tri_index.fill(EMPTY)
-    return Visibility(np.full(tri_index.shape, DEPTH_CLEAR, np.int32), tri_index, np.zeros(tri_index.shape, np.bool_))
+    depth, covered = np.empty(tri_index.shape, np.int32), np.empty(tri_index.shape, np.bool_)
+    clear_frame(depth, tri_index, covered)
+    return Visibility(depth, tri_index, covered)
+
+
+@njit(cache=True, parallel=True)
+def clear_frame(depth, tri_index, covered):
+    """:func:`clear_visibility`'s buffers filled, rows in parallel."""
+    for row in prange(depth.shape[0]):
+        for col in range(depth.shape[1]):
+            depth[row, col] = DEPTH_CLEAR
+            tri_index[row, col] = EMPTY
+            covered[row, col] = False

@@ -201,3 +201,14 @@ def test_the_bands_clear_and_finish_every_row_once_between_them(n_bands, height)
     clear_then_finish(n_bands, BLOCK_ROWS, depth, tri_index, covered, 1)
     np.testing.assert_array_equal(depth, kept)  # finishing leaves the depth to the frame
     np.testing.assert_array_equal(covered, tri_index != EMPTY)
+
+
+def test_a_frame_without_triangles_clears_every_pixel():
+    """clear_visibility (a frame with nothing opaque, rows cleared in parallel): every pixel of
+    the workspace's triangle buffer EMPTY whatever it held, the depth DEPTH_CLEAR, nothing covered."""
+    from renderer.visibility_buffer import DEPTH_CLEAR, EMPTY, clear_visibility
+
+    tri_index = np.full((37, 53), 7, np.int32)
+    vis = clear_visibility(tri_index)
+    assert vis.tri_index is tri_index and (tri_index == EMPTY).all()
+    assert vis.depth.shape == (37, 53) and (vis.depth == DEPTH_CLEAR).all() and not vis.covered.any()
