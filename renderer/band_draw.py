@@ -45,15 +45,12 @@ from renderer.one_pixel import NOT_ONE_COLUMN, OUTSIDE_IMAGE, fill_one_centre, o
 
 
 @njit(cache=True, inline="always")
-def draw_band_in_order(b, setup, deal, rules, buffer, fill_stretch, one_pixel=False):
+def draw_band_in_order(b, setup, deal, rules, buffer, fill_stretch):
     """Band ``b``'s share of a batch in draw order: every triangle with rows drawn on the
-    band's (:func:`draw_on_band`). With ``one_pixel`` (a batch finer than the pixels), a
-    triangle whose box holds one pixel centre is tested at that centre alone
-    (:func:`draw_one_pixel`), not filled by ``fill_stretch``: the same pixels."""
+    band's (:func:`draw_on_band`)."""
     for k in range(setup.ccw.shape[0]):
         if setup.rows[k, 0] <= setup.rows[k, 1]:  # else no row of pixel centres, or nothing to draw
-            if not (one_pixel and draw_one_pixel(k, b, setup, deal, rules, buffer)):
-                draw_on_band(k, b, setup, deal, rules, buffer, fill_stretch, UNTESTED, False)
+            draw_on_band(k, b, setup, deal, rules, buffer, fill_stretch, UNTESTED, False)
 
 
 @njit(cache=True, inline="always")
@@ -61,28 +58,27 @@ def draw_band_from_lists(b, setup, deal, rules, buffer, fill_stretch, one_pixel=
     """:func:`draw_band_in_order` from band ``b``'s own list of the set-up's (``band_listed``,
     :func:`renderer.draw_lists.list_on_bands`, made for the same bands and blocks as ``deal``):
     the triangles with rows in its blocks, chunk after chunk, in draw order; the band does not
-    read the others' rows. The same stretches, in the same order."""
+    read the others' rows. The same stretches, in the same order. With ``one_pixel`` (a batch
+    finer than the pixels), a triangle whose box holds one pixel centre is tested at that
+    centre alone (:func:`draw_one_pixel`), not filled by ``fill_stretch``: the same pixels."""
     first = np.int64(0)
     for chunk in range(setup.tallies.shape[0]):
         for j in range(setup.tallies[chunk, 1 + b]):
             k = np.int64(setup.band_listed[b, first + j])
-            if not (one_pixel and draw_one_pixel(k, b, setup, deal, rules, buffer)):
+            if not (one_pixel and draw_one_pixel(k, setup, rules, buffer)):
                 draw_on_band(k, b, setup, deal, rules, buffer, fill_stretch, UNTESTED, False)
         first += LIST_CHUNK
 
 
 @njit(cache=True, inline="always")
-def draw_one_pixel(k, b, setup, deal, rules, buffer):
-    """Triangle ``k`` when its box holds one pixel centre (one row, :func:`renderer.one_pixel.one_column`):
-    that centre drawn by :func:`renderer.one_pixel.fill_one_centre` if its row is band ``b``'s
-    (``deal`` = (n_bands, block_rows)), and True; False for a triangle of more centres, left to
-    the band's fill."""
+def draw_one_pixel(k, setup, rules, buffer):
+    """Triangle ``k`` of a band's list when its box holds one pixel centre (one row, so
+    the row is the band's; :func:`renderer.one_pixel.one_column`): that centre drawn by
+    :func:`renderer.one_pixel.fill_one_centre`, and True; False for a triangle of more
+    centres, left to the band's fill."""
     lo = setup.rows[k, 0]
     if lo != setup.rows[k, 1]:
         return False
-    n_bands, block_rows = deal
-    if first_block_of_band(lo, b, n_bands, block_rows) * block_rows > lo:
-        return True  # its one row is another band's: nothing of it to draw here
     col = one_column(setup.ccw[k], buffer[0].shape[1])
     if col == NOT_ONE_COLUMN:
         return False
