@@ -43,7 +43,7 @@ from renderer.reflection.registry import (light_points, reflect, reflect_span, s
 from renderer.spans import (CORNERS, LANES, TEXTURED_CORNERS, SpanTable, face_toward_viewer, span_points, span_setup,
                             span_table, span_table_of_corners, span_tcoords, span_texture_corners,
                             span_textured_points, whole_lanes)
-from renderer.texture_sampling import modulate_texels, sample_texture
+from renderer.texture_sampling import modulate_texels, sample_texture, texel_scratch
 from renderer.workspace import empty, thread_workspace
 
 
@@ -300,12 +300,13 @@ def lit_per_pixel(o, materials, lights):
 def span_scratch(width):
     """Scratch of a row: ``(points (6, W + 7), colour (3, W))`` float32 (see :func:`shade_lit_run`),
     ``st`` (2, W + 7) float32, a span's texture coordinates (:func:`modulate_span`), and
-    ``fixed`` (2, W) int64, the texels' fixed-point coordinates (:func:`renderer.texture_sampling.filter_span`). The points and
+    ``fixed``, the texels' fixed-point coordinates and the texels read
+    (:func:`renderer.texture_sampling.texel_scratch`, :func:`renderer.texture_sampling.filter_span`). The points and
     coordinates have room for a span's whole vector lanes (:func:`renderer.spans.whole_lanes`)
     past the row's last column."""
     w = larger(width, 1)
     return (np.empty((6, w + LANES - 1), np.float32), np.empty((3, w), np.float32),
-            np.empty((2, w + LANES - 1), np.float32), np.empty((2, w), np.int64))
+            np.empty((2, w + LANES - 1), np.float32), texel_scratch(w))
 
 
 @njit(cache=True, inline="always")

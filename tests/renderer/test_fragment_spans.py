@@ -18,7 +18,7 @@ from renderer.plane_normals import face_normals
 from renderer.shading import fragment_colour
 from renderer.shading import fragments as make_fragments
 from renderer.shading import with_span_table
-from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, Textures, pack_texels
+from renderer.texture_sampling import CLAMP, LINEAR, NEAREST, REPEAT, Textures, pack_texels, texel_scratch
 from renderer.window import SUBPIXEL
 
 from .kernel_inputs import materials, view_lights
@@ -71,7 +71,7 @@ def colours_of_runs(path, lights, model="vtk", texture=(None, "repeat"), run=RUN
     out = np.empty((32, 3, 2 * RUN), np.float32)
     # texture coordinates go to their own columns of a row's scratch (as points do in the shading kernels)
     points, colour, st = np.empty((6, RUN), np.float32), np.empty((3, RUN), np.float32), np.empty((2, 2 * RUN), np.float32)
-    fixed = np.empty((2, 2 * RUN), np.int64)
+    fixed = texel_scratch.py_func(2 * RUN)
     for row in range(32):
         for c0 in range(0, 2 * RUN, run):
             span_linear_colours(0, row, c0, run, frags, geo, inputs, (points, colour, st, fixed))

@@ -3,8 +3,8 @@ a span's loop gives what one fragment at a time gives."""
 import numpy as np
 import pytest
 
-from renderer.texture_sampling import (CLAMP, LINEAR, NEAREST, REPEAT, Textures, channels, lanes_of, modulate_texels,
-                                       pack_texels, packed_texels, sample)
+from renderer.texture_sampling import (CLAMP, LINEAR, NEAREST, REPEAT, UNIT32, Textures, channels, lanes_of,
+                                       modulate_texels, pack_texels, packed_texels, sample, texel_scratch)
 
 from .texture_filters import by_definition
 
@@ -107,7 +107,7 @@ def test_a_span_is_modulated_by_exactly_the_values_sample_gives(filt, wrap, size
         colour = start.copy()
         at = 5  # the span's coordinates from column 5 of a row's scratch on
         row_st = np.concatenate([np.full((2, at), np.nan, np.float32), st], axis=1)
-        modulate_texels(textures, 1, row_st, at, len(s), colour, np.empty((2, at + len(s)), np.int64))
+        modulate_texels(textures, 1, row_st, at, len(s), colour, texel_scratch.py_func(at + len(s)))
         expected = start * np.array([sample(lanes, 7, width, height, filt, wrap, a, b) for a, b in st.T],
                                     np.float32).T
         np.testing.assert_array_equal(colour, expected)
@@ -128,3 +128,10 @@ def test_a_textures_packed_texels_are_worked_out_once():
     tex = Texture(np.random.default_rng(2).random((4, 6, 3)))
     assert packed_texels(tex) is packed_texels(tex)
     np.testing.assert_array_equal(packed_texels(tex), pack_texels(tex.texels_8bit))
+
+
+def test_an_8_bit_value_divided_by_255_in_float32_is_the_looked_up_unit_value():
+    """The vector blend (``blend_texels``) divides in float32 where the scalar paths look the
+    value up: the same float32 for every 8-bit value."""
+    values = np.arange(256)
+    np.testing.assert_array_equal(values.astype(np.float32) / np.float32(255.0), UNIT32)
