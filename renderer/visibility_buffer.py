@@ -165,8 +165,8 @@ def clear_visibility(tri_index: np.ndarray) -> Visibility:
     """The visibility buffer of a frame without triangles (nothing opaque in the scene): depth
     :data:`DEPTH_CLEAR`, triangle :data:`EMPTY` (written into ``tri_index`` (H, W) int32, the
     workspace's) and nothing covered. The buffers the raster's kernels leave when they draw
-    no triangle, filled by numpy without setting up an empty batch and starting the
-    threads (a frame of translucent objects only: 0.2 ms of the raster and its glue)."""
+    no triangle, filled without setting up an empty batch (a frame of translucent objects
+    only: 0.2 ms of the raster and its glue), rows in parallel (:func:`clear_frame`)."""
     depth, covered = np.empty(tri_index.shape, np.int32), np.empty(tri_index.shape, np.bool_)
     clear_frame(depth, tri_index, covered)
     return Visibility(depth, tri_index, covered)
@@ -174,9 +174,10 @@ def clear_visibility(tri_index: np.ndarray) -> Visibility:
 
 @njit(cache=True, parallel=True)
 def clear_frame(depth, tri_index, covered):
-    """:func:`clear_visibility`'s buffers filled, rows in parallel."""
-    for row in prange(depth.shape[0]):
-        for col in range(depth.shape[1]):
-            depth[row, col] = DEPTH_CLEAR
-            tri_index[row, col] = EMPTY
-            covered[row, col] = False
+    """:func:`clear_visibility`'s buffers filled, rows in parallel: each row cleared as a band's
+    rows are (:func:`clear_band`) and its coverage written as a finished band's
+    (:func:`finish_band`: nothing covered), a band of one row each."""
+    height = depth.shape[0]
+    for row in prange(height):
+        clear_band(np.int64(row), height, 1, depth, tri_index)
+        finish_band(np.int64(row), height, 1, tri_index, covered)
