@@ -308,30 +308,53 @@ def span_setup(k, row, c0, frags, geo, face):
 @njit(cache=True, inline="always")
 def span_weights_at(weights, i):
     """Pixel ``i`` of the span (0 = its first): its three corners' weights ``(w0, w1, w2)``
-    (each already divided by its clip w) and one over their sum, float32: an attribute
-    there is ``(w0·A0 + w1·A1 + w2·A2)·inv``."""
+    (each already divided by its clip w), float32: an attribute there is
+    ``(w0·A0 + w1·A1 + w2·A2) / (w0 + w1 + w2)``."""
     fl0, fb0, fl1, fb1, fl2, fb2, first = weights
     x = first + np.float32(np.int32(i))  # from int32: eight lanes convert in one instruction (int64: one by one)
-    w0, w1, w2 = fl0 + fb0 * x, fl1 + fb1 * x, fl2 + fb2 * x
-    return w0, w1, w2, F1 / (w0 + w1 + w2)
+    return fl0 + fb0 * x, fl1 + fb1 * x, fl2 + fb2 * x
 
 
 @njit(cache=True, inline="always")
 def span_pixel(consts, i, face):
     """Pixel ``i`` of the span (0 = its first): view-space position ``(px, py, pz)`` and unit
-    normal ``(nx, ny, nz)`` on the viewer's side, float32 (see the module docstring)."""
+    normal ``(nx, ny, nz)`` on the viewer's side, float32 (see the module docstring): its
+    sums (:func:`pixel_sums`) finished (:func:`finished_point`)."""
+    return finished_point(pixel_sums(consts, i, face), face)
+
+
+@njit(cache=True, inline="always")
+def pixel_sums(consts, i, face):
+    """The first half of :func:`span_pixel`, without a division or a root: pixel ``i``'s
+    weighted sums of the corners' positions and normals (``w0·A0 + w1·A1 + w2·A2``), the sum
+    of its weights and the span's sign (the plane normal toward the viewer and 1 with
+    ``face``), float32: ``(sx, sy, sz, snx, sny, snz, w, sign)``."""
     weights, positions, normals, face_normal, sign = consts
-    w0, w1, w2, inv = span_weights_at(weights, i)
+    w0, w1, w2 = span_weights_at(weights, i)
     a, b, c = positions
-    px = (w0 * a[0] + w1 * b[0] + w2 * c[0]) * inv
-    py = (w0 * a[1] + w1 * b[1] + w2 * c[1]) * inv
-    pz = (w0 * a[2] + w1 * b[2] + w2 * c[2]) * inv
+    sx = w0 * a[0] + w1 * b[0] + w2 * c[0]
+    sy = w0 * a[1] + w1 * b[1] + w2 * c[1]
+    sz = w0 * a[2] + w1 * b[2] + w2 * c[2]
     if face:
-        return px, py, pz, face_normal[0], face_normal[1], face_normal[2]
+        return sx, sy, sz, face_normal[0], face_normal[1], face_normal[2], w0 + w1 + w2, sign
     a, b, c = normals
-    nx = (w0 * a[0] + w1 * b[0] + w2 * c[0]) * inv
-    ny = (w0 * a[1] + w1 * b[1] + w2 * c[1]) * inv
-    nz = (w0 * a[2] + w1 * b[2] + w2 * c[2]) * inv
+    snx = w0 * a[0] + w1 * b[0] + w2 * c[0]
+    sny = w0 * a[1] + w1 * b[1] + w2 * c[1]
+    snz = w0 * a[2] + w1 * b[2] + w2 * c[2]
+    return sx, sy, sz, snx, sny, snz, w0 + w1 + w2, sign
+
+
+@njit(cache=True, inline="always")
+def finished_point(sums, face):
+    """The second half of :func:`span_pixel`: :func:`pixel_sums` divided by the weights' sum
+    (perspective-correct), the normal made unit and turned by the sign (with ``face``, the
+    plane normal as it is)."""
+    sx, sy, sz, snx, sny, snz, w, sign = sums
+    inv = F1 / w
+    px, py, pz = sx * inv, sy * inv, sz * inv
+    if face:
+        return px, py, pz, snx, sny, snz
+    nx, ny, nz = snx * inv, sny * inv, snz * inv
     length = np.sqrt(nx * nx + ny * ny + nz * nz)
     scale = sign / length if length > F0 else sign
     return px, py, pz, nx * scale, ny * scale, nz * scale
@@ -371,6 +394,33 @@ def span_points(consts, face, count, points, at):
 
 
 @njit(cache=True, inline="always")
+def span_point_sums(consts, face, count, points, at):
+    """The span's first ``count`` pixels' :func:`pixel_sums` into columns ``at`` … ``at + count
+    − 1`` of ``points`` (8, W) float32 (rows sx, sy, sz, snx, sny, snz, w, sign), for
+    :func:`finish_points` to finish over a whole run: a span of a pixel or two then pays no
+    division and no root in scalar code."""
+    for i in range(count):
+        sx, sy, sz, snx, sny, snz, w, sign = pixel_sums(consts, i, face)
+        j = np.uint64(at + i)
+        points[0, j], points[1, j], points[2, j], points[3, j] = sx, sy, sz, snx
+        points[4, j], points[5, j], points[6, j], points[7, j] = sny, snz, w, sign
+
+
+@njit(cache=True, inline="always")
+def finish_points(points, at, count, face):
+    """Columns ``at`` … ``at + count − 1`` of ``points`` (8, W) float32, sums written by
+    :func:`span_point_sums`, made points (:func:`finished_point`) in place: rows x, y, z of
+    the view-space position, then nx, ny, nz of the unit normal (rows 6 and 7 left as they
+    are). One loop over the run, which LLVM vectorises: the same bits as :func:`span_points`."""
+    for i in range(count):
+        j = np.uint64(at + i)
+        px, py, pz, nx, ny, nz = finished_point((points[0, j], points[1, j], points[2, j], points[3, j], points[4, j],
+                                                 points[5, j], points[6, j], points[7, j]), face)
+        points[0, j], points[1, j], points[2, j] = px, py, pz
+        points[3, j], points[4, j], points[5, j] = nx, ny, nz
+
+
+@njit(cache=True, inline="always")
 def span_texture_corners(k, frags):
     """Clipped triangle ``k``'s corners' texture coordinates, float32, from a textured frame's
     span table: ``(s0, t0, s1, t1, s2, t2)`` (flat: numba's parallel loops mistake the
@@ -384,7 +434,8 @@ def span_tcoord(weights, corners, i):
     """Pixel ``i``'s texture coordinates ``(s, t)``, float32, interpolated as positions are
     (:func:`span_weights_at`; ``weights`` from :func:`span_setup`, ``corners`` from
     :func:`span_texture_corners`), as llvmpipe interpolates them, in float32."""
-    w0, w1, w2, inv = span_weights_at(weights, i)
+    w0, w1, w2 = span_weights_at(weights, i)
+    inv = F1 / (w0 + w1 + w2)
     s0, t0, s1, t1, s2, t2 = corners
     return (w0 * s0 + w1 * s1 + w2 * s2) * inv, (w0 * t0 + w1 * t1 + w2 * t2) * inv
 

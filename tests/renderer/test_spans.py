@@ -19,8 +19,8 @@ from renderer import RenderOptions, pipeline, render
 from renderer.jit import njit
 from renderer.pipeline import SceneGeometry
 from renderer.shading import EVERYTHING, SPAN_TABLE, fragments, shade, with_span_table
-from renderer.spans import (LANES, clipped_vertex, face_toward_viewer, span_points, span_setup, span_tcoords,
-                            span_texture_corners, table_weights)
+from renderer.spans import (LANES, clipped_vertex, face_toward_viewer, finish_points, span_point_sums, span_points,
+                            span_setup, span_tcoords, span_texture_corners, table_weights)
 from .assembly import scalar_int64_conversions
 from .single_thread import one_thread
 from .texture_filters import by_definition
@@ -376,3 +376,52 @@ def test_a_spans_pixel_offsets_become_floats_a_vector_at_a_time():
     assert np.isfinite(points).all()
     conversions = scalar_int64_conversions(points_of_span)
     assert len(conversions) < LANES, conversions
+
+
+@njit
+def points_in_two_passes(consts, face, count, points):
+    span_point_sums(consts, face, count, points, 3)
+    finish_points(points, 3, count, face)
+
+
+@njit
+def points_in_one_pass(consts, face, count, points):
+    span_points(consts, face, count, points, 3)
+
+
+def random_span_consts(rng, sign):
+    """A span's float32 constants (``span_setup``'s shape) drawn at random; one corner's normal
+    zero, so a pixel near it may have a normal of length zero."""
+    f = [np.float32(v) for v in rng.uniform(-2.0, 2.0, 7)]
+    f[6] = np.float32(rng.integers(0, 9))  # the first pixel's offset from the anchor: a whole column
+    corners = [tuple(np.float32(v) for v in rng.normal(size=3)) for _ in range(7)]
+    corners[4] = (np.float32(0.0),) * 3
+    return tuple(f), tuple(corners[:3]), tuple(corners[3:6]), corners[6], np.float32(sign)
+
+
+@pytest.mark.parametrize("face", [False, True])
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_points_summed_then_finished_over_a_run_are_the_bits_of_a_span(face, sign):
+    """A run's points in two passes — each span's weighted sums (``span_point_sums``, no
+    division or root), then one loop over the whole run dividing and normalising
+    (``finish_points``) — are the bits ``span_points`` gives pixel by pixel: x, y, z and the
+    unit normal on the viewer's side, turned by the span's sign, the plane normal as it is
+    with ``face``."""
+    rng = np.random.default_rng(7)
+    for _ in range(40):
+        consts = random_span_consts(rng, sign)
+        count = int(rng.integers(1, 3 * LANES))
+        two, one = np.zeros((8, count + 3 + LANES), np.float32), np.zeros((8, count + 3 + LANES), np.float32)
+        points_in_two_passes(consts, face, count, two)
+        points_in_one_pass(consts, face, count, one)
+        np.testing.assert_array_equal(two[:6, 3:3 + count].view(np.int32), one[:6, 3:3 + count].view(np.int32))
+
+
+def test_a_run_is_finished_in_vector_registers():
+    """``finish_points``'s division and root run on whole vector registers (``vdivps``,
+    ``vsqrtps``): what moves them out of the spans of one or two pixels, where they ran one
+    pixel at a time."""
+    consts = random_span_consts(np.random.default_rng(1), 1.0)
+    points_in_two_passes(consts, False, 2 * LANES, np.zeros((8, 3 * LANES + 3), np.float32))
+    asm = "\n".join(points_in_two_passes.inspect_asm().values())
+    assert "vsqrtps" in asm and "vdivps" in asm
