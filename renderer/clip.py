@@ -30,7 +30,7 @@ import numpy as np
 from renderer.jit import njit, prange
 from renderer.min_max import larger, smaller
 
-from renderer.workspace import empty
+from renderer.workspace import empty, kept
 
 N_PLANES = 6
 MAX_POLY = 3 + N_PLANES  # each plane adds at most one vertex to a convex polygon
@@ -179,7 +179,8 @@ def clip_mesh(verts_clip, triangles, ws=None, trivial=True, codes=None) -> Clipp
     outcodes (:func:`trivial_pass`), count what each straddling one leaves
     (:func:`cut_polygons`, which keeps their polygons), then write at the prefix-sum offsets —
     keep the source order.
-    When nothing straddles a plane, the cutting passes are not run (nor compiled).
+    When nothing straddles a plane, the cutting passes are not run (nor compiled); when no
+    vertex lies outside any plane, none of the passes is (:func:`all_kept_whole`).
 
     ws : renderer.workspace.Workspace, optional; the outputs then live in it.
     codes : (N,) uint8, optional; the vertices' outcodes when already known (the pipeline's,
@@ -193,6 +194,8 @@ def clip_mesh(verts_clip, triangles, ws=None, trivial=True, codes=None) -> Clipp
     if codes is None:
         codes = empty(ws, "clip.codes", len(verts_clip), np.uint8)
         outcodes(verts_clip, codes)
+    if trivial and not codes.any():  # every vertex inside every plane: every triangle kept whole
+        return all_kept_whole(len(triangles), ws)
     counts = empty(ws, "clip.counts", len(triangles), np.uint8)
     cut = empty(ws, "clip.cut", len(triangles), np.bool_)
     trivial_pass(triangles, codes, bool(trivial), counts, cut)
@@ -214,6 +217,18 @@ def clip_mesh(verts_clip, triangles, ws=None, trivial=True, codes=None) -> Clipp
     if p:
         write_pieces(straddling, *polygons, offsets, piece_offsets, *out)
     return out
+
+
+def all_kept_whole(count: int, ws=None) -> Clipped:
+    """:func:`clip_mesh`'s answer when every vertex lies inside every plane (no outcode bit
+    set): each of the ``count`` triangles trivially accepted, in source order, no pieces. Its
+    tables depend on ``count`` alone, so they are kept in the workspace from frame to frame
+    (:func:`renderer.workspace.kept`; callers do not write to them). Without this, classifying
+    and listing the triangles one by one took a 1M-triangle scan 4.6 ms a frame at 512² (of
+    39), a 270k one 1.2 ms (of 15)."""
+    return Clipped(source=kept(ws, "clip.all_sources", count, lambda: np.arange(count, dtype=np.int32)),
+                   piece=kept(ws, "clip.no_pieces", count, lambda: np.full(count, -1, np.int32)),
+                   piece_clip=empty(ws, "clip.piece_clip", (0, 3, 4)), piece_bary=empty(ws, "clip.piece_bary", (0, 3, 3)))
 
 
 class Polygons(NamedTuple):

@@ -334,3 +334,34 @@ def test_the_offsets_of_more_than_255_entries_sum_without_wrapping_as_plain_pyth
         assert total == counts.sum() > 255
         np.testing.assert_array_equal(offsets, np.concatenate([[0], np.cumsum(counts)]))
         np.testing.assert_array_equal(source[:total], np.flatnonzero(counts))
+
+
+def test_a_mesh_whose_every_vertex_is_inside_is_kept_whole_without_classifying(monkeypatch):
+    """No vertex outside any plane: every triangle is kept whole, in source order, with no
+    pass over the triangles (``trivial_pass``, ``write_whole`` not run) — the same triangles
+    the classifying passes give, and written out, what cutting every triangle gives. The
+    tables depend on the count alone: a workspace keeps them from frame to frame. One vertex
+    outside, even one no triangle uses, and the triangles are classified as before."""
+    import renderer.clip as clip
+    from renderer.workspace import Workspace
+
+    calls = []
+    for name in ("trivial_pass", "write_whole"):
+        original = getattr(clip, name)
+        monkeypatch.setattr(clip, name, lambda *a, _k=original, _n=name: calls.append(_n) or _k(*a))
+    rng = np.random.default_rng(3)
+    verts = np.concatenate([rng.uniform(-0.9, 0.9, (40, 3)), np.ones((40, 1))], axis=1)
+    tris = rng.integers(0, 40, (70, 3)).astype(np.int64)
+    ws = Workspace()
+    clipped = clip.clip_mesh(verts, tris, ws)
+    assert calls == [] and len(clipped.piece_clip) == 0
+    assert clipped.source.tolist() == list(range(70)) and clipped.piece.tolist() == [-1] * 70
+    assert clip.clip_mesh(verts, tris, ws).source is clipped.source
+    for a, b in zip(clip.clipped_corners(clipped, verts, tris), clip.clip_triangles(verts, tris, trivial=False)):
+        np.testing.assert_array_equal(a, b)
+    calls.clear()  # cutting every triangle (trivial=False) classified them
+    unused_outside = np.concatenate([verts, [(0.0, 0.0, -3.0, 1.0)]])
+    classified = clip.clip_mesh(unused_outside, tris)
+    assert calls == ["trivial_pass", "write_whole"]
+    np.testing.assert_array_equal(classified.source, clipped.source)
+    np.testing.assert_array_equal(classified.piece, clipped.piece)
