@@ -228,7 +228,8 @@ def all_kept_whole(count: int, ws=None) -> Clipped:
     39), a 270k one 1.2 ms (of 15)."""
     return Clipped(source=kept(ws, "clip.all_sources", count, lambda: np.arange(count, dtype=np.int32)),
                    piece=kept(ws, "clip.no_pieces", count, lambda: np.full(count, -1, np.int32)),
-                   piece_clip=empty(ws, "clip.piece_clip", (0, 3, 4)), piece_bary=empty(ws, "clip.piece_bary", (0, 3, 3)))
+                   piece_clip=empty(ws, "clip.piece_clip", (0, 3, 4)),
+                   piece_bary=empty(ws, "clip.piece_bary", (0, 3, 3)))
 
 
 class Polygons(NamedTuple):

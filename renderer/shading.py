@@ -40,9 +40,9 @@ from renderer.raster import EMPTY, screen_weights
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, PIXEL_TWO_SIDED, VERTEX_COLOUR
 from renderer.reflection.registry import (light_points, reflect, reflect_span, span_applies, span_colours,
                                          span_normal_only, spans_apply, store_span)
-from renderer.spans import (finish_points, span_point_sums, CORNERS, LANES, TEXTURED_CORNERS, SpanTable, face_toward_viewer, span_points, span_setup,
-                            span_table, span_table_of_corners, span_tcoords, span_texture_corners,
-                            span_textured_points, whole_lanes)
+from renderer.spans import (CORNERS, LANES, TEXTURED_CORNERS, SpanTable, face_toward_viewer, finish_points,
+                            span_point_sums, span_points, span_setup, span_table, span_table_of_corners, span_tcoords,
+                            span_texture_corners, span_textured_points, whole_lanes)
 from renderer.texture_sampling import modulate_texels, sample_texture, texel_scratch
 from renderer.workspace import empty, thread_workspace
 
