@@ -392,6 +392,27 @@ def clipped_corners(clipped: Clipped, verts_clip, triangles, ws=None, name="clip
     return out_clip, out_bary, out_source
 
 
+@njit(cache=True, parallel=True)
+def pick_triangles(source, piece, order, out_source, out_piece):
+    """Triangles ``order`` (V,) int64 of a :class:`Clipped`'s ``source`` and ``piece`` tables, in
+    that order, into ``out_source`` and ``out_piece`` (V,): :func:`picked`'s loop."""
+    for i in prange(order.shape[0]):
+        k = order[i]
+        out_source[i], out_piece[i] = source[k], piece[k]
+
+
+def picked(source, piece, order, ws=None, name="clip.picked"):
+    """``source[order]`` and ``piece[order]`` (int32; ``order`` int64 rows), in workspace ``ws``
+    under ``name``. The winners of a frame, read at scattered rows of tables as long as the
+    mesh: numpy's indexing of the 1M-triangle scan's 58k winners at 512² took 0.3 ms a table
+    (its checks and its loop, one thread)."""
+    out_source = empty(ws, f"{name}.source", len(order), np.int32)
+    out_piece = empty(ws, f"{name}.piece", len(order), np.int32)
+    if len(order):
+        pick_triangles(source, piece, order, out_source, out_piece)
+    return out_source, out_piece
+
+
 def clip_triangles(verts_clip, triangles, ws=None, trivial=True):
     """:func:`clip_mesh`, with every kept triangle written out (for lessons and tests).
 

@@ -365,3 +365,25 @@ def test_a_mesh_whose_every_vertex_is_inside_is_kept_whole_without_classifying(m
     assert calls == ["trivial_pass", "write_whole"]
     np.testing.assert_array_equal(classified.source, clipped.source)
     np.testing.assert_array_equal(classified.piece, clipped.piece)
+
+
+def test_triangles_picked_in_an_order_are_the_rows_of_that_order():
+    """``picked`` takes the source and piece of the triangles an order names, in that order, as
+    numpy's indexing does — repeats, the last row and an empty order included — and in a
+    workspace the tables are its own (a second pick under another name leaves the first)."""
+    from renderer.clip import picked
+    from renderer.workspace import Workspace
+
+    rng = np.random.default_rng(5)
+    source = rng.integers(0, 1 << 30, 5000).astype(np.int32)
+    piece = rng.integers(-1, 300, 5000).astype(np.int32)
+    order = np.concatenate([rng.permutation(5000)[:1234], [4999, 0, 4999]]).astype(np.int64)
+    ws = Workspace()
+    got_source, got_piece = picked(source, piece, order, ws, "first")
+    np.testing.assert_array_equal(got_source, source[order])
+    np.testing.assert_array_equal(got_piece, piece[order])
+    assert got_source.dtype == got_piece.dtype == np.int32
+    picked(source, piece, order[::-1].copy(), ws, "second")
+    np.testing.assert_array_equal(got_source, source[order])
+    empty_source, empty_piece = picked(source, piece, np.empty(0, np.int64))
+    assert len(empty_source) == len(empty_piece) == 0

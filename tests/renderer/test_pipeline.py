@@ -462,6 +462,7 @@ def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, 
     out, with the workspace's table poisoned first (stale normals from an earlier frame
     cannot hide a frame that reads them unworked); ``render_stages`` always has them all."""
     import renderer.pipeline as pipeline
+    import renderer.shading
     import renderer.visible
     from renderer.pipeline import render_stages
     from renderer.workspace import thread_workspace
@@ -476,7 +477,10 @@ def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, 
     monkeypatch.undo()
     monkeypatch.setattr(renderer.visible, "PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
     monkeypatch.setattr(renderer.visible, "HELD_PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
-    worked_out = []
+    worked_out, span_planes = [], []
+    for module in (pipeline, renderer.shading):  # the span table is built in either, by what shading reads
+        monkeypatch.setattr(module, "with_span_table", lambda frags, geo, *a, _table=module.with_span_table, **k:
+                            span_planes.append(len(geo.face_normals)) or _table(frags, geo, *a, **k))
     original = pipeline.face_normals_of
     monkeypatch.setattr(pipeline, "face_normals_of", lambda *a: worked_out.append(len(np.unique(a[2]))) or original(*a))
     monkeypatch.setattr(pipeline, "face_normals", lambda verts, tris, out: pipeline.face_normals_of(
@@ -485,6 +489,8 @@ def test_plane_normals_are_worked_out_only_for_a_frame_that_reads_them(shading, 
     np.testing.assert_array_equal(render(scene).rgb, expected)
     assert {"none": worked_out == [], "all": worked_out == [triangles],
             "shown": len(worked_out) == 1 and 0 < worked_out[0] < triangles / 2}[computed], worked_out
+    # none read: none handed on to the span table (a frame painted from held colours builds none)
+    assert set(span_planes) == {0} if computed == "none" else set(span_planes) <= {triangles}, span_planes
     _, stages = render_stages(scene)
     assert np.allclose(np.linalg.norm(stages.geometry.face_normals, axis=1), 1.0)
 
@@ -536,3 +542,22 @@ def test_a_frame_painted_from_held_colours_builds_no_planes_and_keeps_the_bytes(
     render(tiny_scene())
     count, planes, corners = seen[-1]
     assert count > 0 and planes == corners == count
+
+
+def test_a_frame_without_translucent_objects_keeps_its_all_opaque_mask_across_frames():
+    """Which clipped triangles are translucent (``translucent_triangles``): in a frame without a
+    translucent object, all False, and the array is the workspace's from frame to frame (not
+    made and tested afresh); with one, each triangle's object's opacity decides."""
+    from renderer.pipeline import clip_and_map, transform_scene, translucent_triangles
+    from renderer.workspace import Workspace
+
+    scene = tiny_scene()
+    ws = Workspace()
+    clipped = clip_and_map(transform_scene(scene, np.eye(4), np.eye(4), ws), 64, 48, ws)
+    opaque = np.ones(len(scene.objects))
+    mask = translucent_triangles(clipped, opaque, ws)
+    assert mask.dtype == np.bool_ and len(mask) == clipped.count > 0 and not mask.any()
+    assert translucent_triangles(clipped, opaque, ws) is mask
+    some = np.where(np.arange(len(scene.objects)) == 0, 0.5, 1.0)
+    np.testing.assert_array_equal(translucent_triangles(clipped, some, ws),
+                                  clipped.geometry.tri_object[clipped.clip_source] == 0)
