@@ -41,10 +41,10 @@ from renderer.shading import (EVERYTHING, HELD, Fragments, ShadingInputs, fragme
 from renderer.spans import CornerTables
 from renderer.texture_sampling import texture_table
 from renderer.translucency import draw_translucent
-from renderer.transform import normal_matrix, transform_vertices
+from renderer.transform import normal_matrix, normals_to_view, transform_vertices
 from renderer.visibility_buffer import depth_to_window
 from renderer.visible import renumbering_pays, visible_triangles
-from renderer.window import window_into, window_rows_to_image_rows
+from renderer.window import WindowVertices, window_into, window_rows_to_image_rows
 from renderer.workspace import empty, kept, thread_workspace
 
 
@@ -189,19 +189,35 @@ class ClippedMesh:
                                 np.take(self.fixed, rows, axis=0))  # np.take: 11 µs, indexing 42 µs (1,484 triangles)
 
 
-def clip_and_map(geo: SceneGeometry, width: int, height: int, ws=None, trivial: bool = True) -> ClippedMesh:
+def clip_and_map(geo: SceneGeometry, width: int, height: int, ws=None, trivial: bool = True,
+                 vertices: WindowVertices | None = None) -> ClippedMesh:
     """Stages 4 and 5: clip the scene's triangles (:func:`renderer.clip.clip_mesh`; ``trivial``
     False cuts every one) and map the scene's vertices and the pieces' corners to the
-    window, once each."""
+    window, once each. ``vertices``: the scene's vertices already mapped
+    (:func:`transform_and_map`), in workspace ``ws``'s tables when given one; the pieces'
+    corners are then mapped into the rows after them (in the same storage while it is large
+    enough, else the vertices' rows are copied over: a frame with more pieces than any before)."""
     clipped = clip_mesh(geo.verts_clip, geo.triangles, ws, trivial, geo.outcodes)
     n, p = len(geo.verts_clip), len(clipped.piece_clip)
-    window = empty(ws, "window.window", (n + 3 * p, 3))
-    fixed = empty(ws, "window.fixed", (n + 3 * p, 2), np.int64)
-    cells = empty(ws, "window.cells", n + 3 * p, np.int64)
-    window_into(geo.verts_clip, width, height, window[:n], fixed[:n], cells[:n])
-    if p:  # no pieces, no parallel loop to start
-        window_into(clipped.piece_clip.reshape(-1, 4), width, height, window[n:], fixed[n:], cells[n:])
+    if vertices is not None and not p:
+        return ClippedMesh(clipped.source, clipped.piece, clipped, geo, vertices.window, vertices.fixed, vertices.cells)
+    window, fixed, cells = window_tables(ws, n + 3 * p)
+    if vertices is None:
+        window_into(geo.verts_clip, width, height, window[:n], fixed[:n], cells[:n])
+    else:
+        for table, mapped in zip((window, fixed, cells), (vertices.window, vertices.fixed, vertices.cells)):
+            if not np.shares_memory(table[:n], mapped):
+                table[:n] = mapped
+    window_into(clipped.piece_clip.reshape(-1, 4), width, height, window[n:], fixed[n:], cells[n:])
     return ClippedMesh(clipped.source, clipped.piece, clipped, geo, window, fixed, cells)
+
+
+def window_tables(ws, rows: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``window`` (rows, 3), ``fixed`` (rows, 2) int64 and ``cells`` (rows,) int64 for points
+    mapped to the window (:func:`renderer.window.window_into`), in workspace ``ws``: the
+    scene's vertices in the first rows, the pieces' corners after them (:class:`ClippedMesh`)."""
+    return (empty(ws, "window.window", (rows, 3)), empty(ws, "window.fixed", (rows, 2), np.int64),
+            empty(ws, "window.cells", rows, np.int64))
 
 
 class RasterRules(NamedTuple):
@@ -225,6 +241,23 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
     written again (:meth:`renderer.workspace.Workspace.kept`). ``with_face_normals`` False leaves
     ``face_normals`` undefined, for a frame no object of which reads them
     (:func:`renderer.reflection.materials.any_flat`)."""
+    return transform_and_map(scene, world_to_view_m, view_to_clip_m, None, ws, with_face_normals).geometry
+
+
+class MappedScene(NamedTuple):
+    """:func:`transform_and_map`'s result: the scene's ``geometry`` after stages 1–3
+    (:class:`SceneGeometry`) and its ``vertices`` in window space (stage 5,
+    :class:`renderer.window.WindowVertices`; tables without rows when not mapped)."""
+
+    geometry: SceneGeometry
+    vertices: WindowVertices
+
+
+def transform_and_map(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray, size, ws=None,
+                      with_face_normals: bool = True) -> MappedScene:
+    """:func:`transform_scene`, and each vertex mapped to a window ``size`` (width, height)
+    pixels in the same loop (None: not mapped), into the first rows of the window tables
+    (:func:`window_tables`) that :func:`clip_and_map` then completes with the pieces' corners."""
     objects = scene.objects
     n_points = [obj.mesh.n_points for obj in objects]
     n_triangles = [obj.mesh.n_triangles for obj in objects]
@@ -233,6 +266,8 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
     verts_view, verts_clip = empty(ws, "geometry.verts_view", (n, 3)), empty(ws, "geometry.verts_clip", (n, 4))
     codes = empty(ws, "geometry.outcodes", n, np.uint8)
     normals = empty(ws, "geometry.normals_view", (n, 3))
+    window, fixed, cells = window_tables(ws, n) if size is not None else UNMAPPED
+    pixels = (0, 0) if size is None else (int(size[0]), int(size[1]))
     tri_object = kept(ws, "geometry.tri_object", tuple(n_triangles), partial(object_numbers, n_triangles))
     vert_object = kept(ws, "geometry.vert_object", tuple(n_points), partial(object_numbers, n_points))
     textured = any(obj.mesh.tcoords is not None for obj in objects)
@@ -242,11 +277,11 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
     for obj, a, b in zip(objects, starts[:-1], starts[1:]):
         model_to_view = obj.model_to_world @ world_to_view_m
         mesh = obj.mesh
+        transform_vertices(np.ascontiguousarray(mesh.points, dtype=np.float64), model_to_view, view_to_clip_m, pixels,
+                           verts_view[a:b], verts_clip[a:b], codes[a:b], window[a:b], fixed[a:b], cells[a:b])
         has_normals = mesh.point_normals is not None
-        transform_vertices(np.ascontiguousarray(mesh.points, dtype=np.float64), model_to_view, view_to_clip_m,
-                           np.ascontiguousarray(mesh.point_normals, dtype=np.float64) if has_normals else no_normals,
-                           normal_matrix(model_to_view) if has_normals else np.eye(3),
-                           verts_view[a:b], verts_clip[a:b], normals[a:b], codes[a:b])
+        normals_to_view(np.ascontiguousarray(mesh.point_normals, dtype=np.float64) if has_normals else no_normals,
+                        normal_matrix(model_to_view) if has_normals else np.eye(3), normals[a:b])
         if textured:
             tcoords[a:b] = mesh.tcoords if mesh.tcoords is not None else 0.0
     if len(objects) == 1:
@@ -258,8 +293,13 @@ def transform_scene(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarr
     normals_face = empty(ws, "geometry.face_normals", (t, 3))
     if with_face_normals:
         face_normals(verts_view, triangles, normals_face)
-    return SceneGeometry(verts_view, verts_clip, codes, normals, triangles, tri_object, vert_object, tcoords, normals_face,
-                         bool(scene.camera.parallel))
+    geometry = SceneGeometry(verts_view, verts_clip, codes, normals, triangles, tri_object, vert_object, tcoords,
+                             normals_face, bool(scene.camera.parallel))
+    return MappedScene(geometry, WindowVertices(fixed, window, cells))
+
+
+UNMAPPED = (np.empty((0, 3)), np.empty((0, 2), np.int64), np.empty(0, np.int64))
+"""The window tables of vertices not mapped (:func:`transform_and_map` without a size): no rows."""
 
 
 def object_numbers(counts) -> np.ndarray:
@@ -400,12 +440,12 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     ws = thread_workspace()
     materials = material_table(scene)
     every_normal = keep_stages or any_face_colour(materials)
-    geo = transform_scene(scene, w2v, v2c, ws, with_face_normals=every_normal)
+    geo, vertices = transform_and_map(scene, w2v, v2c, (width, height), ws, with_face_normals=every_normal)
     if not (every_normal or any_flat(materials)):
         geo = geo._replace(face_normals=NO_FACE_NORMALS)  # nothing reads them: the span table neither
 
     lean = options.lean
-    clipped = clip_and_map(geo, width, height, ws, trivial=lean)
+    clipped = clip_and_map(geo, width, height, ws, trivial=lean, vertices=vertices)
     hidden = scene.render.hidden_surface
     if hidden == "painter":  # back to front; the fragments then simply overwrite
         clipped = clipped.take(painter_order(clipped.written_out().tri_window))

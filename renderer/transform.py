@@ -15,6 +15,7 @@ import numpy as np
 
 from renderer.clip import outcode
 from renderer.jit import njit, prange
+from renderer.window import map_point
 
 
 def to_homogeneous(points: np.ndarray) -> np.ndarray:
@@ -45,20 +46,24 @@ def points_through(points, m, out):
 
 
 @njit(cache=True, parallel=True)
-def transform_vertices(points, model_to_view, view_to_clip, normals, normal_m, verts_view, verts_clip, normals_view,
-                       codes):
-    """Stages 1–3 for one object's vertices (the loop kernel), into plain arrays.
+def transform_vertices(points, model_to_view, view_to_clip, size, verts_view, verts_clip, codes, window, fixed, cells):
+    """Stages 1–3 for one object's vertices (the loop kernel), into plain arrays, and stage 5
+    for each of them while it is at hand.
 
     ``verts_view[i] = ([p, 1] @ model_to_view)[:3]``, ``verts_clip[i] = ([p, 1] @ model_to_view)
-    @ view_to_clip`` (the full homogeneous view vector, w included) and, when ``normals``
-    has rows, ``normals_view[i] = normals[i] @ normal_m``; else ``normals_view`` is zeroed.
-    ``codes[i]`` is the clip-space vertex's outcode (:func:`renderer.clip.outcode`), worked
-    out while the vertex is at hand, for the clipper's trivial accept and reject: a pass of
-    its own over the vertices cost a parallel kernel's compile on a cold start (0.3 s) and
-    a second read of ``verts_clip``.
+    @ view_to_clip`` (the full homogeneous view vector, w included). ``codes[i]`` is the
+    clip-space vertex's outcode (:func:`renderer.clip.outcode`), worked out here for the
+    clipper's trivial accept and reject: a pass of its own over the vertices cost a parallel
+    kernel's compile on a cold start (0.3 s) and a second read of ``verts_clip``. When
+    ``window`` has rows, each vertex is also mapped to a window ``size`` (width, height) pixels
+    into ``window``, ``fixed`` and ``cells`` (:func:`renderer.window.map_point`, the bits of
+    :func:`renderer.window.window_into`): a pass of its own read every vertex's clip-space row
+    back (the 1M-triangle scan's 537k vertices, some 17 MB a frame). Normals:
+    :func:`normals_to_view`.
     """
     m, p = model_to_view, view_to_clip
-    has_normals = normals.shape[0] > 0
+    width, height = size
+    mapped = window.shape[0] > 0
     for i in prange(points.shape[0]):
         x, y, z = points[i, 0], points[i, 1], points[i, 2]
         vx = x * m[0, 0] + y * m[1, 0] + z * m[2, 0] + m[3, 0]
@@ -69,6 +74,16 @@ def transform_vertices(points, model_to_view, view_to_clip, normals, normal_m, v
         for c in range(4):
             verts_clip[i, c] = vx * p[0, c] + vy * p[1, c] + vz * p[2, c] + vw * p[3, c]
         codes[i] = outcode(verts_clip, i)
+        if mapped:
+            map_point(verts_clip, i, width, height, window, fixed, cells)
+
+
+@njit(cache=True, parallel=True)
+def normals_to_view(normals, normal_m, normals_view):
+    """``normals_view[i] = normals[i] @ normal_m`` (:func:`normal_matrix`) for one object's
+    vertices; when ``normals`` has no rows (a mesh without normals), ``normals_view`` is zeroed."""
+    has_normals = normals.shape[0] > 0
+    for i in prange(normals_view.shape[0]):
         if has_normals:
             nx, ny, nz = normals[i, 0], normals[i, 1], normals[i, 2]
             for c in range(3):

@@ -561,3 +561,33 @@ def test_a_frame_without_translucent_objects_keeps_its_all_opaque_mask_across_fr
     some = np.where(np.arange(len(scene.objects)) == 0, 0.5, 1.0)
     np.testing.assert_array_equal(translucent_triangles(clipped, some, ws),
                                   clipped.geometry.tri_object[clipped.clip_source] == 0)
+
+
+def test_vertices_mapped_with_the_transform_give_the_clipped_mesh_of_the_mapping_after_clipping():
+    """``transform_and_map`` maps the vertices in the transform's loop; ``clip_and_map`` given them
+    gives the tables it gives mapping them itself, bit for bit: on a scene inside the view (the
+    vertices' own tables, nothing copied), on one that clipping cuts into pieces (their corners
+    in the rows after the vertices, in the same storage), and when the pieces outgrow the
+    workspace's tables (a bigger table, the vertices' rows copied over)."""
+    from renderer.camera import view_to_clip, world_to_view
+    from renderer.pipeline import clip_and_map, transform_and_map, transform_scene
+    from renderer.workspace import Workspace
+
+    def both(scene, ws):
+        w, h = scene.image.size
+        args = (scene, world_to_view(scene.camera), view_to_clip(scene.camera, w / h, (NEAR, FAR)))
+        geo, vertices = transform_and_map(*args, (w, h), ws)
+        mapped = clip_and_map(geo, w, h, ws, vertices=vertices)
+        plain = clip_and_map(transform_scene(*args), w, h)
+        for name in ("clip_source", "piece", "window", "fixed", "cells"):
+            np.testing.assert_array_equal(getattr(mapped, name), getattr(plain, name), err_msg=name)
+        return vertices, mapped
+
+    inside = replace(tiny_scene(), camera=Camera(position=(0.0, 0.0, 6.0), view_angle=40.0))
+    vertices, mapped = both(inside, Workspace())
+    assert len(mapped.clipped.piece_clip) == 0 and mapped.window is vertices.window
+    ws, cut = Workspace(), view_volume_scene()
+    vertices, mapped = both(cut, ws)  # the tables first sized for the vertices: outgrown, their rows copied
+    assert len(mapped.clipped.piece_clip) > 0 and not np.shares_memory(mapped.window, vertices.window)
+    vertices, mapped = both(cut, ws)  # large enough now: the pieces' rows after the vertices', in place
+    assert np.shares_memory(mapped.window, vertices.window)
