@@ -150,7 +150,7 @@ class ClippedMesh:
         """The triangles picked by ``index`` (a mask or an order), in that order."""
         return replace(self, clip_source=self.clip_source[index], piece=self.piece[index])
 
-    def take_in_order(self, order: np.ndarray, ws=None, name: str = "clipped") -> "ClippedMesh":
+    def take_in_order(self, order: np.ndarray, ws=None, name: str = "picked") -> "ClippedMesh":
         """:meth:`take` of the triangles ``order`` (int64), in that order, with the tables in workspace
         ``ws`` under ``name`` (:func:`renderer.clip.picked`)."""
         source, piece = picked(self.clip_source, self.piece, order, ws, name)
