@@ -23,6 +23,8 @@ cannot write.
 
 Threads: importing this module chooses numba's threading layer before numba starts
 (:mod:`renderer.threads`: TBB when it loads, else OpenMP with ``OMP_WAIT_POLICY=passive``).
+Vectors: and the features numba compiles for, 512-bit vectors on AVX-512
+(:mod:`renderer.vector_width`), before its first compile.
 
 Every kernel module imports ``njit`` from here, not from numba, so no renderer kernel can
 be cached without this locator being in place (``tests/renderer/test_jit.py`` checks).
@@ -40,6 +42,7 @@ import sys
 from pathlib import Path
 
 from renderer.threads import choose_threading_layer
+from renderer.vector_width import chosen_features
 
 # Before numba starts: TBB's work-taking threads, else OpenMP's with passive waiting
 # (renderer/threads.py); the package decides, not the user's shell.
@@ -50,6 +53,10 @@ from numba import prange  # noqa: E402
 from numba.core.caching import CacheImpl, IndexDataCacheFile, _CacheLocator  # noqa: E402
 
 numba.config.THREADING_LAYER = LAYER  # also when something imported numba before us
+
+FEATURES = chosen_features()  # 512-bit vectors on AVX-512 (renderer/vector_width.py); read at numba's first compile
+if FEATURES is not None:
+    numba.config.CPU_FEATURES = FEATURES
 
 
 def import_numpy_support_without_blas() -> None:
