@@ -13,10 +13,12 @@ The bytes cannot change: the kernels use no fast-math, so LLVM vectorises no flo
 its written order and each lane computes what the scalar code computes, IEEE operation by
 IEEE operation (every preset and every bench scene at both sizes: the same rgb, depth and
 coverage with and without; ``tests/renderer/test_vector_width.py``). Measured, whole frames
-in alternating processes (two threads, medians of 25 frames, three rounds, before → after,
+in alternating processes (two threads, medians of 25 frames, two or three rounds, before → after,
 ms): ico5-phong at 1024² 7.16–8.17 → 6.92–7.11, textured-sphere at 1024² 6.56–6.76 →
 6.12–6.46, ico5-phong at 512² 3.88–4.01 → 3.50–3.90, the 1,024-segment cylinder at 512²
-2.94–3.24 → 2.76–2.96; geometry-bound frames (ico7-flat, the Igea scans) within the noise.
+2.94–3.24 → 2.76–2.96. Frames bound by their triangles (the level-7 icospheres, the sponges, the
+Igea scans) moved within the noise; the raster stage alone is a few per cent slower in most
+rounds (−6 to +14 %, docs/performance.md): its lanes of 8 depths fit 256 bits.
 
 A choice the user made (``NUMBA_CPU_FEATURES`` set) is kept; without AVX-512 nothing changes.
 numba's kernel cache files each kernel under the features it was compiled for, so a cache
