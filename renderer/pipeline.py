@@ -208,7 +208,8 @@ def clip_and_map(geo: SceneGeometry, width: int, height: int, ws=None, trivial: 
         for table, mapped in zip((window, fixed, cells), (vertices.window, vertices.fixed, vertices.cells)):
             if not np.shares_memory(table[:n], mapped):
                 table[:n] = mapped
-    window_into(clipped.piece_clip.reshape(-1, 4), width, height, window[n:], fixed[n:], cells[n:])
+    if p:  # no pieces, no parallel loop to start
+        window_into(clipped.piece_clip.reshape(-1, 4), width, height, window[n:], fixed[n:], cells[n:])
     return ClippedMesh(clipped.source, clipped.piece, clipped, geo, window, fixed, cells)
 
 
