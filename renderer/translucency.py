@@ -242,19 +242,29 @@ def batch_scratch(width):
 
 
 @njit(cache=True, inline="always")
-def emit_run(colour, first, a, row, c0, count, seen, start, colours, buffers):
+def emit_run(colour, first, a, row, c0, count, seen_row, start, colours, buffers):
     """A lit run's fragments (pixels ``c0 … c0 + count − 1`` of ``row``, linear colours from
     column ``first`` of ``colour`` (3, N) float32, alpha ``a``) to where
-    :func:`shade_fragments` sends them: with ``colours`` (F, 3) not empty, each pixel's next
-    place in its fragment list (``start``, ``seen``); else the row's ``oit`` buffers
-    ``buffers`` (W, 5) (:func:`add_run_to_oit`)."""
+    :func:`shade_fragments` sends them, counted in ``seen_row`` (W,) int32, the row's counts:
+    with ``colours`` (F, 3) not empty, each pixel's next place in its fragment list
+    (``start``, and the count so far); else the row's ``oit`` buffers ``buffers`` (W, 5)
+    (:func:`add_run_to_oit`)."""
     if colours.shape[0] > 0:
         for i in range(count):
-            j = start[row, c0 + i] + seen[row, c0 + i]
+            j = start[row, c0 + i] + seen_row[c0 + i]
             colours[j, 0], colours[j, 1], colours[j, 2] = colour[0, first + i], colour[1, first + i], colour[2, first + i]
-            seen[row, c0 + i] += 1
+            seen_row[c0 + i] += 1
     else:
-        add_run_to_oit(colour, first, a, c0, count, seen[row], buffers)
+        add_run_to_oit(colour, first, a, c0, count, seen_row, buffers)
+
+
+@njit(cache=True, inline="always")
+def cover_row(seen_row, covered_row):
+    """A resolved row's coverage: ``covered_row`` (W,) bool True where ``seen_row`` (W,) int32
+    counted a fragment; the counts then cleared for the strip's next row there."""
+    for col in range(seen_row.shape[0]):
+        covered_row[col] = seen_row[col] > 0
+        seen_row[col] = 0
 
 
 @njit(cache=True, inline="always")
@@ -303,11 +313,14 @@ class RunRules(NamedTuple):
 
 class RunTargets(NamedTuple):
     """What :func:`shade_fragments` reads and writes (window rows): ``opaque_depth`` (H, W)
-    the opaque z-buffer; ``seen`` (H, W) int32 each pixel's fragments so far; ``start``
-    (H, W) int64 and ``colours`` (F, 3) float32 the fragment lists to fill (``colours``
-    empty: none); ``sums`` (bands, :data:`STRIP_ROWS`, W, 5) float32 the ``oit`` buffers of
-    each band's strip (:mod:`renderer.oit_buffers`; W is 0 with lists to fill); ``rgb``
-    (H, W, 3) uint8."""
+    the opaque z-buffer; ``seen`` int32 each pixel's fragments so far, (H, W) with lists to
+    fill, else (bands · :data:`STRIP_ROWS`, W), the rows of each band's strip (counts that
+    stay in the cache, cleared as each row is resolved); ``start`` (H, W) int64 and
+    ``colours`` (F, 3) float32 the fragment lists to fill (``colours`` empty: none); ``sums``
+    (bands, :data:`STRIP_ROWS`, W, 5) float32 the ``oit`` buffers of each band's strip
+    (:mod:`renderer.oit_buffers`; W is 0 with lists to fill); ``rgb`` (H, W, 3) uint8;
+    ``covered`` (H, W) bool, for ``oit``, which pixels got a fragment (written as each row is
+    resolved; (0, 0) with lists to fill)."""
 
     opaque_depth: np.ndarray
     seen: np.ndarray
@@ -315,6 +328,7 @@ class RunTargets(NamedTuple):
     colours: np.ndarray
     sums: np.ndarray
     rgb: np.ndarray
+    covered: np.ndarray
 
 
 @njit(cache=True, parallel=True)
@@ -327,20 +341,20 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
     (:func:`renderer.fragment_spans.span_linear_colours`; ``how`` a :class:`RunRules`;
     ``into`` a :class:`RunTargets`); for an object that
     :func:`renderer.fragment_spans.lit_in_batches`, all the triangle's runs on the strip's
-    rows are interpolated first and lit in one loop, then sent on run by run (:func:`emit_run`). ``seen`` (H, W) counts each pixel's fragments so far. Then:
+    rows are interpolated first and lit in one loop, then sent on run by run (:func:`emit_run`). ``seen`` counts each pixel's fragments so far. Then:
 
     - with ``colours`` (F, 3) float32 not empty: fragment ``j`` of pixel (row, col) gets
       its colour at ``start[row, col] + j`` (the lists of :func:`fragment_lists`);
     - else (``oit``): each fragment is added straight to the pixel's ``oit`` buffers
       ``sums`` (one strip a band, :mod:`renderer.oit_buffers`; :func:`oit_add`, in draw
       order as the lists would give it), and when a band has drawn every triangle over a
-      strip, its rows are composited over ``rgb`` (:func:`oit_resolve`) — no lists, no
-      second pass.
+      strip, its rows are composited over ``rgb`` (:func:`oit_resolve`) and their coverage
+      written into ``covered`` (:func:`cover_row`) — no lists, no second pass.
     """
     opaque_depth, seen, start = into.opaque_depth, into.seen, into.start
-    colours, sums, rgb = into.colours, into.sums, into.rgb
+    colours, sums, rgb, covered = into.colours, into.sums, into.rgb, into.covered
     n_bands, rule, depth_test, spans = how.n_bands, how.rule, how.depth_test, how.spans
-    height, width = seen.shape
+    height, width = opaque_depth.shape
     fill = colours.shape[0] > 0
     n_strips = (height + STRIP_ROWS - 1) // STRIP_ROWS
     for b in prange(n_bands):
@@ -351,13 +365,18 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
         resolving = resolve_scratch(width)  # a row's oit values and colours (resolve_oit_row)
         nearest = np.empty(STRIP_ROWS, np.int32)  # the nearest opaque depth of each of the strip's rows
         touched = np.empty((STRIP_ROWS, 2), np.int64)  # the first and last column each row's runs touched
+        counted = b * STRIP_ROWS  # without lists, the first of the band's rows of ``seen``
         if not fill:
             clear_oit_strip(sums[b])  # then each row clears what it touched when it is resolved
+            seen[counted:counted + STRIP_ROWS] = 0  # and its counts, all of them
         for strip in range(b, n_strips, n_bands):
             lo, hi = strip * STRIP_ROWS, smaller(strip * STRIP_ROWS + STRIP_ROWS, height) - 1
+            if fill:
+                counted = lo  # with lists, ``seen`` has every row of the image
+                for row in range(lo, hi + 1):
+                    for col in range(width):
+                        seen[row, col] = 0
             for row in range(lo, hi + 1):
-                for col in range(width):
-                    seen[row, col] = 0
                 nearest[row - lo] = nearest_in_row(opaque_depth, row)
             touched[:, 0], touched[:, 1] = width, -1
             for k in range(setup.ccw.shape[0]):
@@ -408,19 +427,22 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                             n_runs, n_points = n_runs + 1, n_points + lanes
                             continue
                         span_linear_colours(k, row, c0, col - c0, frags, geo, inputs, scratch)
-                        emit_run(colour, 0, a, row, c0, col - c0, seen, start, colours, sums[b, row - lo])
+                        emit_run(colour, 0, a, row, c0, col - c0, seen[counted + row - lo], start, colours,
+                                 sums[b, row - lo])
                         widen(touched, row - lo, c0, col - c0)
                 if n_runs:
                     light_batch(o, materials, lights, run_points, n_points, run_colours)
                     first = 0
                     for r in range(n_runs):
                         row, c0, count = runs[r, 0], runs[r, 1], runs[r, 2]
-                        emit_run(run_colours, first, a, row, c0, count, seen, start, colours, sums[b, row - lo])
+                        emit_run(run_colours, first, a, row, c0, count, seen[counted + row - lo], start, colours,
+                                 sums[b, row - lo])
                         widen(touched, row - lo, c0, count)
                         first += whole_lanes(count)
             if not fill:
                 for row in range(lo, hi + 1):
                     resolve_oit_row(sums[b, row - lo], rgb[row], resolving, touched[row - lo, 0], touched[row - lo, 1])
+                    cover_row(seen[counted + row - lo], covered[row])
 
 
 @njit(cache=True, parallel=True)
@@ -517,24 +539,27 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
     corners = [np.ascontiguousarray(t) for t in (clipped.tri_clip, clipped.clip_bary, clipped.clip_source)]
     frags = with_span_table(fragments(np.empty((0, 0), np.int32), setup.plane, setup.front, *corners, perspective),
                             geo, ws, "translucency", textured=bool(inputs.textures.textured.any()))
-    seen = empty(ws, "translucency.seen", (height, width), np.int32)
     strip_bands = raster_bands((height + STRIP_ROWS - 1) // STRIP_ROWS)
     shading = (setup, frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit,
                RunRules(strip_bands, rule, bool(depth_test), bool(spans)))
     if MODES[mode] == OIT and spans:
+        covered = np.empty((height, width), np.bool_)  # every row written as it is resolved
         with one_band_at_a_time():
-            shade_fragments(*shading, RunTargets(opaque_depth, seen, np.empty((1, 1), np.int64),
-                                                 np.empty((0, 3), np.float32),
+            shade_fragments(*shading, RunTargets(opaque_depth,
+                                                 empty(ws, "translucency.strip_seen", (strip_bands * STRIP_ROWS, width),
+                                                       np.int32),
+                                                 np.empty((1, 1), np.int64), np.empty((0, 3), np.float32),
                                                  empty(ws, "translucency.sums", (strip_bands, STRIP_ROWS, width, OIT_VALUES),
-                                                       np.float32), rgb))
-        return seen > 0
+                                                       np.float32), rgb, covered))
+        return covered
     lists = collect_lists(setup, opaque_depth, rule, depth_test, n_bands, ws)
     colours = empty(ws, "translucency.colours", (len(lists.tri), 3), np.float32)
     with one_band_at_a_time():
         if len(colours):
-            shade_fragments(*shading, RunTargets(opaque_depth, seen, lists.start, colours,
+            shade_fragments(*shading, RunTargets(opaque_depth, empty(ws, "translucency.seen", (height, width), np.int32),
+                                                 lists.start, colours,
                                                  np.empty((strip_bands, STRIP_ROWS, 0, OIT_VALUES), np.float32),
-                                                 rgb))
+                                                 rgb, np.empty((0, 0), np.bool_)))
         alphas = inputs.materials.opacity[geo.tri_object[frags.clip_source]]
         composite_lists(lists, colours, alphas, MODES[mode], shading_bands(height), rgb)
     return lists.count > 0
