@@ -40,9 +40,9 @@ from renderer.shading import (EVERYTHING, HELD, Fragments, ShadingInputs, fragme
                               with_span_table)
 from renderer.spans import CornerTables
 from renderer.texture_sampling import texture_table
-from renderer.translucency import draw_translucent
+from renderer.translucency import draw_translucent, reads_opaque_depth
 from renderer.transform import normal_matrix, normals_to_view, transform_vertices
-from renderer.visibility_buffer import depth_to_window
+from renderer.visibility_buffer import cleared_depth, depth_to_window, untested_visibility
 from renderer.visible import renumbering_pays, visible_triangles
 from renderer.window import WindowVertices, window_into, window_rows_to_image_rows
 from renderer.workspace import empty, kept, thread_workspace
@@ -402,6 +402,11 @@ def image_depth(depth: np.ndarray) -> np.ndarray:
     return depth_to_window(window_rows_to_image_rows(depth))
 
 
+def image_depth_of_nothing(shape) -> np.ndarray:
+    """:func:`image_depth` of a frame with nothing opaque (:func:`renderer.visibility_buffer.cleared_depth`)."""
+    return image_depth(cleared_depth(shape))
+
+
 def render(scene, options: RenderOptions = RenderOptions()) -> Frame:
     """Draw ``scene`` with scanlab's own pipeline.
 
@@ -456,9 +461,15 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     any_translucent = bool((materials.opacity < 1.0).any()) and bool(translucent.any())
     opaque = clipped.take(~translucent) if any_translucent else clipped
     backs_last = options.backs_last and rules.depth_test and not rules.cull_back
-    vis = rasterize_visibility(opaque.indexed(), width, height, rules.fill_rule, ws=ws,
-                               depth_test=rules.depth_test, cull_back=rules.cull_back, batch=BATCH if lean else None,
-                               backs_last=backs_last)
+    untested = (any_translucent and opaque.count == 0 and not keep_stages
+                and not reads_opaque_depth(scene.render.transparency, options.spans))
+    if untested:  # nothing opaque: every translucent fragment passes the depth test, so none is made
+        vis = untested_visibility(empty(ws, "raster.tri_index", (height, width), np.int32))
+        rules = rules._replace(depth_test=False)
+    else:
+        vis = rasterize_visibility(opaque.indexed(), width, height, rules.fill_rule, ws=ws,
+                                   depth_test=rules.depth_test, cull_back=rules.cull_back,
+                                   batch=BATCH if lean else None, backs_last=backs_last)
     lights = view_lights(scene.lights, cam, w2v, scene.render)
     inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
     reads = fragment_reads(inputs, options.spans)
@@ -479,7 +490,8 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
         cover = draw_translucent(clipped.take(translucent).written_out(), vis.depth, rgb, geo, inputs,
                                  scene.render.transparency, perspective, rules, ws, options.spans)  # a fresh array
         coverage = np.logical_or(coverage, cover, out=cover) if opaque.count else cover
-    frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=partial(image_depth, vis.depth),
+    depth = partial(image_depth_of_nothing, (height, width)) if untested else partial(image_depth, vis.depth)
+    frame = Frame(rgb=window_rows_to_image_rows(rgb), depth=depth,
                   coverage=window_rows_to_image_rows(coverage))
     if not keep_stages:
         return frame, None

@@ -102,7 +102,7 @@ def collect_fragments(setup, n_bands, rule, depth_test, opaque_depth, count, sta
                 z_row = row_depth(k, row, setup.plane)
                 for col in range(first, last + 1):
                     z = pixel_depth(k, z_row, col, setup.plane)
-                    if z <= opaque_depth[row, col] or not depth_test:
+                    if not depth_test or z <= opaque_depth[row, col]:  # without the test, the buffer unread
                         if fill:
                             i = start[row, col] + count[row, col]
                             frag_tri[i] = k
@@ -377,7 +377,7 @@ def shade_fragments(setup, frags, geo, materials, textures, lights, lit, how, in
                     for col in range(width):
                         seen[row, col] = 0
             for row in range(lo, hi + 1):
-                nearest[row - lo] = nearest_in_row(opaque_depth, row)
+                nearest[row - lo] = nearest_in_row(opaque_depth, row) if depth_test else DEPTH_CLEAR
             touched[:, 0], touched[:, 1] = width, -1
             for k in range(setup.ccw.shape[0]):
                 if setup.rows[k, 0] > hi or setup.rows[k, 1] < lo:  # not on this strip
@@ -517,6 +517,13 @@ def fragment_lists(tri_fixed, tri_window, opaque_depth, fill_rule="top-left", de
                                 ws)
 
 
+def reads_opaque_depth(mode: str, spans: bool) -> bool:
+    """Whether :func:`draw_translucent` reads ``opaque_depth`` even without a depth test: the
+    fragment lists' compositing does (whether an opaque surface lies behind a pixel,
+    :func:`composite_pixel`); ``oit`` summed as the fragments are drawn (``spans``) does not."""
+    return not (MODES[mode] == OIT and spans)
+
+
 def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mode="oit", perspective=True,
                      rules=None, ws=None, spans=True):
     """Draw the translucent clipped triangles over the opaque frame ``rgb`` (window rows, in place).
@@ -528,7 +535,8 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
     defaults when None). ``spans`` : light fragments in runs and, for ``oit``, sum them as
     they are drawn (the fast path); False: fragment lists for every mode, lit one pixel at
     a time (the plain path the tests compare with: the same bytes). Returns the (H, W)
-    bool mask of pixels that got at least one translucent fragment.
+    bool mask of pixels that got at least one translucent fragment. Without a depth test,
+    the ``oit`` fast path reads only ``opaque_depth``'s shape (:func:`reads_opaque_depth`).
     """
     fill_rule, depth_test, cull_back = rules if rules is not None else ("top-left", True, False)
     height, width = opaque_depth.shape

@@ -591,3 +591,36 @@ def test_vertices_mapped_with_the_transform_give_the_clipped_mesh_of_the_mapping
     assert len(mapped.clipped.piece_clip) > 0 and not np.shares_memory(mapped.window, vertices.window)
     vertices, mapped = both(cut, ws)  # large enough now: the pieces' rows after the vertices', in place
     assert np.shares_memory(mapped.window, vertices.window)
+
+
+# --------------------------------------------------------------------------- nothing opaque
+@pytest.mark.parametrize("hidden", ["zbuffer", "painter"])
+@pytest.mark.parametrize("transparency", ["oit", "depth_peeling", "sorted"])
+def test_a_frame_with_nothing_opaque_gives_the_bytes_of_the_cleared_buffers(transparency, hidden, monkeypatch):
+    """Translucent objects only: with ``oit`` the frame clears no opaque buffer and its
+    fragments skip the depth test they would all pass (``untested_visibility``; the raster
+    is not called), the other modes clear and read the buffers; either way the rgb, depth and
+    coverage of ``render_stages``, which always rasterises the (empty) opaque pass."""
+    import renderer.pipeline
+    from renderer import render_stages
+
+    scene = load_scene("translucent-three")
+    scene = replace(scene, image=replace(scene.image, size=(160, 120)),
+                    render=replace(scene.render, transparency=transparency, hidden_surface=hidden))
+    assert all(obj.material.opacity < 1.0 for obj in scene.objects)
+    cleared, _ = render_stages(scene)
+    if transparency == "oit":
+        monkeypatch.setattr(renderer.pipeline, "rasterize_visibility", None)  # a call would fail
+        unwritten = renderer.pipeline.untested_visibility
+
+        def poisoned(tri_index):  # buffers nothing may read: depth 0 would hide every fragment
+            vis = unwritten(tri_index)
+            vis.depth.fill(0)
+            vis.tri_index.fill(0)
+            return vis
+
+        monkeypatch.setattr(renderer.pipeline, "untested_visibility", poisoned)
+    frame = render(scene)
+    assert 0.2 < frame.coverage.mean() < 0.9
+    for name in ("rgb", "depth", "coverage"):
+        np.testing.assert_array_equal(getattr(frame, name), getattr(cleared, name), err_msg=name)
