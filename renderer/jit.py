@@ -30,7 +30,11 @@ values into one vector instruction (the four half-float sums of an ``oit`` fragm
 :func:`renderer.oit_buffers.add_run_to_oit`: one packed add and one packed rounding to
 half instead of four each; a translucent-three frame at 1024² about 5 % quicker). It
 reorders no floating-point arithmetic, so every kernel gives the same bits (every preset
-and bench scene checked); elsewhere its effect was within the noise.
+and bench scene checked); elsewhere its effect was within the noise. Both are set in the
+environment (``NUMBA_CPU_FEATURES``, ``NUMBA_SLP_VECTORIZE=1`` unless the user set it) as
+well as on ``numba.config``: numba reads its configuration again from the environment
+whenever a ``NUMBA_`` variable changes, which values set on ``numba.config`` alone did not
+survive.
 
 Every kernel module imports ``njit`` from here, not from numba, so no renderer kernel can
 be cached without this locator being in place (``tests/renderer/test_jit.py`` checks).
@@ -53,17 +57,22 @@ from renderer.vector_width import chosen_features
 # Before numba starts: TBB's work-taking threads, else OpenMP's with passive waiting
 # (renderer/threads.py); the package decides, not the user's shell.
 LAYER = choose_threading_layer()
+# The vectors' width and LLVM's straight-line vectoriser (numba's default: off) go through the
+# environment too: numba reads its configuration again from it whenever a NUMBA_ variable
+# changes, and values set on numba.config alone were then lost.
+FEATURES = chosen_features()  # 512-bit vectors on AVX-512 (renderer/vector_width.py); None: the user's
+if FEATURES is not None:
+    os.environ["NUMBA_CPU_FEATURES"] = FEATURES
+os.environ.setdefault("NUMBA_SLP_VECTORIZE", "1")
 
 import numba  # noqa: E402  (after the threading layer is chosen)
 from numba import prange  # noqa: E402
 from numba.core.caching import CacheImpl, IndexDataCacheFile, _CacheLocator  # noqa: E402
 
 numba.config.THREADING_LAYER = LAYER  # also when something imported numba before us
-
-FEATURES = chosen_features()  # 512-bit vectors on AVX-512 (renderer/vector_width.py); read at numba's first compile
-if FEATURES is not None:
+if FEATURES is not None:  # read at numba's first compile
     numba.config.CPU_FEATURES = FEATURES
-numba.config.SLP_VECTORIZE = 1  # LLVM's straight-line vectoriser, read at each compile (numba's default: off)
+numba.config.SLP_VECTORIZE = int(os.environ["NUMBA_SLP_VECTORIZE"])
 
 
 def import_numpy_support_without_blas() -> None:

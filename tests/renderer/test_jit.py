@@ -364,15 +364,19 @@ def test_a_kernel_is_filed_under_a_lock_another_process_can_hold(tmp_path):
     assert not saving.is_alive() and cache.load(("sig", "cpu")) == b"machine code"
 
 
-def test_like_operations_side_by_side_become_one_vector_instruction():
+def test_like_operations_side_by_side_become_one_vector_instruction(monkeypatch):
     """LLVM's straight-line vectoriser is on for every kernel (numba leaves it off): four
-    sums of neighbouring values compile to a packed add, not four scalar ones."""
+    sums of neighbouring values compile to a packed add, not four scalar ones — also after a
+    ``NUMBA_`` variable changed, when numba reads its configuration again (as a test that
+    sets one makes it do)."""
     import platform
 
     import numpy as np
 
     if platform.machine() not in ("x86_64", "AMD64"):
         pytest.skip("the packed-add instruction checked is x86's")
+
+    monkeypatch.setenv("NUMBA_DEBUG_CACHE", "0")  # numba's configuration read again at the next compile
 
     @jit.njit
     def four_sums(a, b):

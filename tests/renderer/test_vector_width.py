@@ -86,3 +86,23 @@ def test_kernels_use_512_bit_registers_and_draw_the_bytes_of_256_bit_ones(tmp_pa
     assert wide["features"].endswith("-prefer-256-bit") and wide["zmm"]
     assert narrow["features"] == HOST and not narrow["zmm"]
     assert wide["image"] == narrow["image"]
+
+
+def test_the_chosen_features_survive_numba_reading_its_configuration_again(monkeypatch):
+    """numba reads its configuration from the environment again whenever a ``NUMBA_``
+    variable changes (at the next compile): the features the renderer chose are still those
+    the kernels compiled after it use."""
+    import numba
+
+    from renderer import jit
+
+    if jit.FEATURES is None:
+        pytest.skip("NUMBA_CPU_FEATURES was set by the user before the renderer chose")
+    monkeypatch.setenv("NUMBA_DEBUG_CACHE", "0")
+
+    @jit.njit
+    def one_more(x):
+        return x + 1
+
+    assert one_more(1) == 2
+    assert numba.config.CPU_FEATURES == jit.FEATURES
