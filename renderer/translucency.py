@@ -550,7 +550,7 @@ def draw_translucent(clipped, opaque_depth, rgb, geo, inputs: ShadingInputs, mod
     strip_bands = raster_bands((height + STRIP_ROWS - 1) // STRIP_ROWS)
     shading = (setup, frags, geo, inputs.materials, inputs.textures, inputs.lights, inputs.lit,
                RunRules(strip_bands, rule, bool(depth_test), bool(spans)))
-    if MODES[mode] == OIT and spans:
+    if not reads_opaque_depth(mode, spans):  # oit, summed as the fragments are drawn
         covered = np.empty((height, width), np.bool_)  # every row written as it is resolved
         with one_band_at_a_time():
             shade_fragments(*shading, RunTargets(opaque_depth,
