@@ -71,7 +71,7 @@ class TriangleSetup(NamedTuple):
     (K, 2) first and last window row of pixel centres it may cover (none when first >
     last); plane (K, 11): x0, y0, e1x, e1y, e2x, e2y — vertex 0 and the edges to vertices 1
     and 2 in float window coordinates, in the triangle's own vertex order (for the weights)
-    — then the depth plane ax, ay, az, zx, zy (:func:`depth_plane`). A triangle that draws
+    — unwritten with :data:`DROP_WEIGHTS` — then the depth plane ax, ay, az, zx, zy (:func:`depth_plane`). A triangle that draws
     nothing (no area, culled, or no pixel centre it can cover: :mod:`renderer.pixel_centres`)
     gets no rows, ``ccw`` or depth plane (nor weights, when its centre cells dropped it).
     listed (K,) int32, counts (⌈K / LIST_CHUNK⌉, 2) int64: for back faces drawn last, the
@@ -167,12 +167,15 @@ SETUP_CHUNK = np.uint64(LIST_CHUNK)
 chunk of the bands' lists, which it writes (:mod:`renderer.draw_lists`)."""
 
 
-DROP_BACK_FACES, DROP_MISSED_CENTRES, DROP_EMPTY_BOXES = 1, 2, 4
+DROP_BACK_FACES, DROP_MISSED_CENTRES, DROP_EMPTY_BOXES, DROP_WEIGHTS = 1, 2, 4, 8
 """Bits of the set-up's ``drops`` (:func:`setup_triangles`): back-face culling (a clockwise
 triangle gets no rows); the test of a box's lone pixel centre (:func:`renderer.pixel_centres.centre_rows`);
-and, first of all, a box without pixel centres told by the corners' centre cells
+first of all, a box without pixel centres told by the corners' centre cells
 (:func:`renderer.pixel_centres.box_misses_centres`, set when the vertices come with them):
-no rows, and no area, facing (False) or weights' plane worked out (docs/performance.md)."""
+no rows, and no area, facing (False) or weights' plane worked out (docs/performance.md);
+and the weights' plane (the first six columns of ``plane``) left unwritten for every
+triangle: the opaque raster reads the depth plane alone, and shading works out the weights
+of the triangles that won a pixel (:func:`weight_planes`)."""
 
 
 @njit(cache=True, parallel=True)
@@ -223,9 +226,11 @@ def set_up_range(chunk, corners, vertices, height, drops, front, ccw, rows, plan
             continue
         area = signed_area_corners(fixed, i0, i1, i2)
         front[k] = area > 0
-        weights_plane(window, i0, i1, i2, plane[k])
+        x0, y0, e1x, e1y, e2x, e2y = window_edges(window, i0, i1, i2)
+        if not drops & DROP_WEIGHTS:
+            plane[k, 0], plane[k, 1], plane[k, 2], plane[k, 3], plane[k, 4], plane[k, 5] = x0, y0, e1x, e1y, e2x, e2y
         lo, hi = 1, 0  # no rows: nothing to draw
-        if area != 0 and plane[k, 2] * plane[k, 5] - plane[k, 4] * plane[k, 3] != 0.0 and not (
+        if area != 0 and e1x * e2y - e2x * e1y != 0.0 and not (
                 drops & DROP_BACK_FACES and area < 0):
             lo, hi = centre_rows(fixed, i0, i1, i2, area, height, drops & DROP_MISSED_CENTRES)
         rows[k, 0], rows[k, 1] = lo, hi
@@ -479,18 +484,27 @@ def weights_of_visible(plane, tri_index, bary):
                 bary[row, col, 0], bary[row, col, 1] = screen_weights(k, row, col, plane)
 
 
+WEIGHTS_IN_RASTER = False
+"""Whether :func:`rasterize_visibility`'s set-up works out the weights' plane of every triangle
+(:data:`DROP_WEIGHTS`): nothing the raster draws reads it, shading works it out for the
+triangles that won a pixel. Left out, the set-up writes 48 bytes a triangle fewer: whole
+frames, off / on alternating in one process, medians of 30 pairs, two runs: the 1M-triangle
+scan at 1024² 0.986 and 0.983, the other big meshes 0.98–1.01 (docs/performance.md). True
+is the plain path the tests compare with: the same buffers."""
+
 BATCH = 1 << 15
 """Triangles set up and drawn at a time: the set-up tables stay this long (about 5 MB)."""
 
 
 def set_up_corners(corners: CornerIndex, vertices: WindowVertices, height: int, cull_back: bool, ws=None,
-                   name="raster", lone_test: bool = False, n_bands: int = 1) -> TriangleSetup:
+                   name="raster", lone_test: bool = False, n_bands: int = 1, weights: bool = True) -> TriangleSetup:
     """Allocate (in workspace ``ws`` under ``name``) and run :func:`setup_triangles` on the
     triangles whose corners ``corners`` names among the rows of ``vertices``
     (:class:`renderer.window.WindowVertices`); those whose box holds no pixel centre are
     dropped first from the vertices' cells when they come with them (:data:`DROP_EMPTY_BOXES`);
     ``lone_test``: drop those whose box's lone pixel centre is outside (:data:`DROP_MISSED_CENTRES`);
-    ``n_bands``: the bands the raster draws them in (their lists, ``band_listed``)."""
+    ``n_bands``: the bands the raster draws them in (their lists, ``band_listed``); ``weights``
+    False: the weights' plane is not worked out (:data:`DROP_WEIGHTS`)."""
     k_count = len(corners.source)
     chunks, lists = -(-k_count // int(SETUP_CHUNK)), -(-k_count // LIST_CHUNK)
     tallies = empty(ws, f"{name}.tallies", (chunks, 1 + n_bands), np.int64)
@@ -502,7 +516,7 @@ def set_up_corners(corners: CornerIndex, vertices: WindowVertices, height: int, 
                           counts=empty(ws, f"{name}.counts", (lists, 2), np.int64),
                           band_listed=empty(ws, f"{name}.band_listed", (n_bands, k_count), np.int32), tallies=tallies)
     drops = ((DROP_BACK_FACES if cull_back else 0) | (DROP_MISSED_CENTRES if lone_test else 0)
-             | (DROP_EMPTY_BOXES if len(vertices.cells) else 0))
+             | (DROP_EMPTY_BOXES if len(vertices.cells) else 0) | (0 if weights else DROP_WEIGHTS))
     setup_triangles(corners, vertices, height, drops, *setup[:4], setup.band_listed, tallies)
     return setup
 
@@ -554,7 +568,7 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
         corners = triangles.corners.batch(a, min(a + step, count))
         vertices = triangles.vertices if span < LONE_ROWS else triangles.vertices._replace(cells=NO_CELLS)
         setup = set_up_corners(corners, vertices, height, cull_back, ws, "raster", lone_test=span < LONE_ROWS,
-                               n_bands=bands)
+                               n_bands=bands, weights=WEIGHTS_IN_RASTER)
         with one_band_at_a_time():
             span = mean_rows(setup)  # chooses the kernel, the order and the next batch's test, never the pixels
             kernel = rasterize_walking if span >= TALL_ROWS else rasterize

@@ -651,3 +651,61 @@ def test_no_triangles_leave_the_buffer_a_culled_triangle_leaves(depth_test):
     np.testing.assert_array_equal(nothing.tri_index, culled.tri_index)
     np.testing.assert_array_equal(nothing.covered, culled.covered)
     assert not culled.covered.any() and nothing.depth.dtype == culled.depth.dtype
+
+
+def test_the_raster_set_up_leaves_the_weights_plane_unwritten_and_works_out_the_rest_the_same():
+    """With ``weights=False`` (:data:`renderer.raster.DROP_WEIGHTS`, the opaque raster's set-up)
+    the first six columns of ``plane`` keep what was there (here NaN), and the facing, rows,
+    counter-clockwise corners and depth plane of every triangle that draws are those of the
+    set-up that works the weights out; triangles of every kind, with no area among them."""
+    from renderer.raster import set_up_corners
+    from renderer.indexed_triangles import whole_triangles
+    from renderer.workspace import Workspace
+
+    rng = np.random.default_rng(21)
+    width, height = 40, 60
+    fixed = random_triangles(rng, 600, width, height).astype(np.int64)
+    fixed[:30] = fixed[:30, :1]  # no area
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, rng.uniform(0, 1, (len(fixed), 3, 1))], axis=2)
+    whole = whole_triangles(fixed, window, with_cells=False)
+    ws = Workspace()
+    set_up_corners(whole.corners, whole.vertices, height, False, ws, "lean", weights=False)
+    ws.array("lean.plane", (len(fixed), 11))[:] = np.nan
+    lean = set_up_corners(whole.corners, whole.vertices, height, False, ws, "lean", weights=False)
+    full = set_up_corners(whole.corners, whole.vertices, height, False, None, "full", weights=True)
+    draws = full.rows[:, 0] <= full.rows[:, 1]
+    assert np.isnan(lean.plane[:, :6]).all() and np.isfinite(full.plane[:, :6]).all()
+    assert 100 < draws.sum() < len(fixed) - 30
+    np.testing.assert_array_equal(lean.rows, full.rows)
+    np.testing.assert_array_equal(lean.front, full.front)
+    np.testing.assert_array_equal(lean.ccw[draws], full.ccw[draws])
+    np.testing.assert_array_equal(lean.plane[draws, 6:], full.plane[draws, 6:])
+
+
+@pytest.mark.parametrize("batch", [None, 7])
+def test_the_raster_fills_the_same_buffer_with_and_without_the_weights_plane(monkeypatch, batch):
+    """:data:`renderer.raster.WEIGHTS_IN_RASTER` (the plain path: every triangle's weights
+    worked out in the set-up) and without: the same depth, triangles and coverage, z-buffer
+    ties, tall triangles for the walking kernel and no-area ones among them; the set-up's
+    tables start poisoned, as a workspace's may hold anything."""
+    import renderer.raster as raster
+    from renderer.indexed_triangles import whole_triangles
+
+    rng = np.random.default_rng(22)
+    width, height = 37, 29
+    fixed = random_triangles(rng, 240, width, height).astype(np.int64)
+    fixed[:10] = fixed[:10, :1]
+    z = np.where(rng.random((240, 1)) < 0.5, 0.5, rng.uniform(0, 1, (240, 3)))
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, z[..., None] * np.ones((240, 3, 1))], axis=2)
+    def poisoned(ws, name, shape, dtype=np.float64):  # what an earlier frame may have left
+        return np.full(shape, np.nan if np.dtype(dtype).kind == "f" else 3, dtype)
+
+    monkeypatch.setattr(raster, "empty", poisoned)
+    buffers = {}
+    for weights in (True, False):
+        monkeypatch.setattr(raster, "WEIGHTS_IN_RASTER", weights)
+        buffers[weights] = raster.rasterize_visibility(whole_triangles(fixed, window), width, height, batch=batch,
+                                                       backs_last=True)
+    assert len(np.unique(buffers[False].tri_index)) > 20
+    for name in ("depth", "tri_index", "covered"):
+        np.testing.assert_array_equal(getattr(buffers[False], name), getattr(buffers[True], name))
