@@ -257,7 +257,7 @@ class MappedScene(NamedTuple):
 def transform_and_map(scene, world_to_view_m: np.ndarray, view_to_clip_m: np.ndarray, size, ws=None,
                       with_face_normals: bool = True) -> MappedScene:
     """:func:`transform_scene`, and each vertex mapped to a window ``size`` (width, height)
-    pixels in the same loop (None: not mapped), into the first rows of the window tables
+    pixels in the same kernel (None: not mapped), into the first rows of the window tables
     (:func:`window_tables`) that :func:`clip_and_map` then completes with the pieces' corners."""
     objects = scene.objects
     n_points = [obj.mesh.n_points for obj in objects]

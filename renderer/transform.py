@@ -48,18 +48,23 @@ def points_through(points, m, out):
 @njit(cache=True, parallel=True)
 def transform_vertices(points, model_to_view, view_to_clip, size, verts_view, verts_clip, codes, window, fixed, cells):
     """Stages 1–3 for one object's vertices (the loop kernel), into plain arrays, and stage 5
-    for each of them while it is at hand.
+    for each of them while they are at hand.
 
     ``verts_view[i] = ([p, 1] @ model_to_view)[:3]``, ``verts_clip[i] = ([p, 1] @ model_to_view)
     @ view_to_clip`` (the full homogeneous view vector, w included). ``codes[i]`` is the
     clip-space vertex's outcode (:func:`renderer.clip.outcode`), worked out here for the
-    clipper's trivial accept and reject: a pass of its own over the vertices cost a parallel
-    kernel's compile on a cold start (0.3 s) and a second read of ``verts_clip``. When
-    ``window`` has rows, each vertex is also mapped to a window ``size`` (width, height) pixels
-    into ``window``, ``fixed`` and ``cells`` (:func:`renderer.window.map_point`, the bits of
-    :func:`renderer.window.window_into`): a pass of its own read every vertex's clip-space row
-    back (the 1M-triangle scan's 537k vertices, some 17 MB a frame). Normals:
-    :func:`normals_to_view`.
+    clipper's trivial accept and reject: a kernel of its own cost a parallel kernel's compile
+    on a cold start (0.3 s). When ``window`` has rows, each vertex is also mapped to a window
+    ``size`` (width, height) pixels into ``window``, ``fixed`` and ``cells``
+    (:func:`renderer.window.map_point`, the bits of :func:`renderer.window.window_into`).
+    Normals: :func:`normals_to_view`.
+
+    Two parallel loops: the matrix products, then the outcodes and the mapping, which read the
+    clip-space rows back. In one loop, with the rounding to int64 and the outcode's bits among
+    its stores, LLVM made no vector code of the products on a processor without AVX-512:
+    the 1M-triangle scan's 537k vertices took 7.1–7.6 ms in one loop and 5.0–6.0 in two (the
+    kernel alone, the two alternating in one process; two threads), whole frames 0.94–0.99 of
+    the time (docs/performance.md). The second loop compiles in about 0.2 s more.
     """
     m, p = model_to_view, view_to_clip
     width, height = size
@@ -73,6 +78,7 @@ def transform_vertices(points, model_to_view, view_to_clip, size, verts_view, ve
         verts_view[i, 0], verts_view[i, 1], verts_view[i, 2] = vx, vy, vz
         for c in range(4):
             verts_clip[i, c] = vx * p[0, c] + vy * p[1, c] + vz * p[2, c] + vw * p[3, c]
+    for i in prange(points.shape[0]):
         codes[i] = outcode(verts_clip, i)
         if mapped:
             map_point(verts_clip, i, width, height, window, fixed, cells)

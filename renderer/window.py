@@ -71,8 +71,8 @@ def map_point(points_clip, i, width, height, window, fixed, cells):
     """Row ``i`` of ``points_clip`` (M, 4) mapped to the window: its row of ``window`` (x, y up,
     z in 0..1), of ``fixed`` (x, y on the 1/256 grid, rounded half to even) and its
     :func:`centre_cell`. The one definition of the mapping: :func:`window_into` runs it for
-    every point, :func:`renderer.transform.transform_vertices` for each vertex it has just
-    written (the same bits)."""
+    every point, :func:`renderer.transform.transform_vertices` for each vertex it has
+    transformed (the same bits)."""
     w = points_clip[i, 3]
     x = (points_clip[i, 0] / w + 1.0) * (width / 2.0)
     y = (points_clip[i, 1] / w + 1.0) * (height / 2.0)
