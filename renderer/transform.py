@@ -61,10 +61,11 @@ def transform_vertices(points, model_to_view, view_to_clip, size, verts_view, ve
 
     Two parallel loops: the matrix products, then the outcodes and the mapping, which read the
     clip-space rows back. In one loop, with the rounding to int64 and the outcode's bits among
-    its stores, LLVM made no vector code of the products on a processor without AVX-512:
-    the 1M-triangle scan's 537k vertices took 7.1–7.6 ms in one loop and 5.0–6.0 in two (the
-    kernel alone, the two alternating in one process; two threads), whole frames 0.94–0.99 of
-    the time (docs/performance.md). The second loop compiles in about 0.2 s more.
+    its stores, the whole ran at about a third of the speed of its parts on a processor
+    without AVX-512 (which has no vector conversion of doubles to int64): the 1M-triangle
+    scan's 537k vertices took 7.1–7.6 ms in one loop and 5.0–6.0 in two (the kernel alone,
+    the two alternating in one process; two threads), whole frames 0.94–0.99 of the time
+    (docs/performance.md). The second loop compiles in about 0.2 s more.
     """
     m, p = model_to_view, view_to_clip
     width, height = size
