@@ -107,9 +107,13 @@ def _helpers_running() -> list[str]:
 
 
 def test_scanlab_render_on_an_empty_cache_draws_the_same_picture_and_leaves_no_helper_behind(tmp_path):
+    """A cold ``scanlab render`` with its helper writes the PNG that the same command writes
+    alone from the project's kernel cache (warm by now in a test session; a cold start alone,
+    without the helper, is :func:`tests.renderer.test_jit.test_a_cold_start_compiles_within_the_bar`'s:
+    compiled twice here it cost the suite about a minute)."""
     outputs = []
-    for name, ahead in (("helped", "1"), ("alone", "0")):
-        env = {**_environment(tmp_path / name), "SCANLAB_COMPILE_AHEAD": ahead}
+    for name, env in (("helped", {**_environment(tmp_path / "kernels"), "SCANLAB_COMPILE_AHEAD": "1"}),
+                      ("alone", {**os.environ, "SCANLAB_COMPILE_AHEAD": "0"})):
         out = tmp_path / f"{name}.png"
         done = subprocess.run([sys.executable, "-m", "lab", "render", "icosphere:level=3", "-o", str(out)],
                               cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)
