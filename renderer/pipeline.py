@@ -11,7 +11,8 @@ it from per-pixel fragment lists (:mod:`renderer.translucency`).
 Memory: per-triangle tables stay short. Clipping names the triangles it keeps whole
 instead of copying them and the window mapping maps each vertex once
 (:class:`ClippedMesh`); the raster sets up and draws :data:`renderer.raster.BATCH`
-triangles at a time; shading gets tables for the triangles that won a pixel only
+triangles at a time (a frame of up to :data:`ONE_BATCH`, all at once); shading gets tables
+for the triangles that won a pixel only
 (:mod:`renderer.visible`). ``RenderOptions(lean=False)`` is the plain path the tests
 compare this with.
 """
@@ -303,6 +304,24 @@ UNMAPPED = (np.empty((0, 3)), np.empty((0, 2), np.int64), np.empty(0, np.int64))
 """The window tables of vertices not mapped (:func:`transform_and_map` without a size): no rows."""
 
 
+ONE_BATCH = 1 << 18
+"""The most triangles of a frame the raster sets up and draws as one batch (:func:`raster_batch`;
+about 45 MB of set-up tables, against 5 MB a batch of :data:`renderer.raster.BATCH`): then
+every front face of the frame is drawn before its back faces, and the tile z-buffer hides
+most of those (:mod:`renderer.hidden_back_faces`). Measured, whole frames, one batch against
+batches alternating in one process (20 pairs): the level-7 icospheres, 190k triangles kept,
+0.87–0.91 of the time (flat and phong, 512² and 1024²). Larger frames stay in batches: as one
+batch the 270k-triangle scan took 0.91–0.96, but the 672k-triangle sponge 1.045 and the 1M
+scan 1.03, and a whole 328k-triangle sphere 192 bytes a triangle at 128² instead of 50
+(docs/performance.md)."""
+
+
+def raster_batch(count: int) -> int:
+    """Triangles the raster sets up and draws at a time, of a frame's ``count``: all of them up
+    to :data:`ONE_BATCH`, else :data:`renderer.raster.BATCH`."""
+    return count if count <= ONE_BATCH else BATCH
+
+
 def object_numbers(counts) -> np.ndarray:
     """(Σ counts,) int64: object i's number repeated ``counts[i]`` times — the object of each
     triangle (or vertex) of the concatenated tables. It depends on the counts alone, so
@@ -469,7 +488,7 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
     else:
         vis = rasterize_visibility(opaque.indexed(), width, height, rules.fill_rule, ws=ws,
                                    depth_test=rules.depth_test, cull_back=rules.cull_back,
-                                   batch=BATCH if lean else None, backs_last=backs_last)
+                                   batch=raster_batch(opaque.count) if lean else None, backs_last=backs_last)
     lights = view_lights(scene.lights, cam, w2v, scene.render)
     inputs = ShadingInputs(materials, texture_table(scene), lights, lit_colours(geo, materials, lights, ws))
     reads = fragment_reads(inputs, options.spans)

@@ -548,10 +548,10 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     (depth and coverage, fresh each time) lives in it.
     ``n_bands`` defaults to one per thread (:func:`renderer.bands.raster_bands`);
     ``depth_test=False`` turns the z-buffer test off; ``cull_back=True`` drops back-facing triangles.
-    ``backs_last=True`` (with the depth test): in each batch whose triangles span
-    :data:`~renderer.hidden_back_faces.BACKS_LAST_ROWS` rows or more on average, the back
-    faces after the front faces (listed, :mod:`renderer.draw_lists`), skipping those a tile
-    z-buffer shows hidden: the same buffer, quicker for closed surfaces seen from outside.
+    ``backs_last=True`` (with the depth test): in each batch whose triangles span :data:`~renderer.hidden_back_faces.BACKS_LAST_ROWS`
+    rows or more on average, and in a lone batch of over :data:`BATCH` not finer than the pixels, the back faces
+    after the front faces (listed, :mod:`renderer.draw_lists`), skipping those a tile z-buffer
+    shows hidden: the same buffer, quicker for closed surfaces seen from outside.
     A batch after one finer than the pixels (:data:`~renderer.pixel_centres.LONE_ROWS`) drops
     triangles by their corners' centre cells and tests lone centres: the same buffer.
     No triangles (a scene with nothing opaque): the clear buffer, :func:`clear_visibility`.
@@ -574,7 +574,7 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
             kernel = rasterize_walking if span >= TALL_ROWS else rasterize
             ends = ((FIRST_BATCH if a == 0 else 0) | (LAST_BATCH if a + step >= count else 0)
                     | (FINE_BATCH if span < LONE_ROWS else 0))
-            behind = tiles if span >= BACKS_LAST_ROWS else NO_TILES
+            behind = tiles if span >= BACKS_LAST_ROWS or (step >= count > BATCH and span >= LONE_ROWS) else NO_TILES
             if behind is not NO_TILES:
                 list_by_facing(setup.rows, setup.front, setup.listed, setup.counts)
             kernel(setup, rule, bool(depth_test), a, ends, depth, tri_index, covered, behind)

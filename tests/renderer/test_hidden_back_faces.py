@@ -192,3 +192,39 @@ def test_the_deepest_of_a_stretch_of_a_row_is_its_largest_depth_and_0_for_none()
     row = np.random.default_rng(3).integers(0, 1 << 24, 100).astype(np.int32)
     for first, end in [(0, 100), (3, 19), (17, 18), (96, 100), (40, 40)]:
         assert deepest_in_row(row, first, end) == (row[first:end].max() if end > first else 0)
+
+
+def small_soup(rng, n, width, height):
+    """``n`` small triangles (about two rows each) at random depths over the image, half of
+    them wound clockwise, with their windows (see :func:`soup`)."""
+    centre = rng.integers(0, min(width, height) * SUBPIXEL, (n, 1, 2))
+    fixed = centre + rng.integers(-2 * SUBPIXEL, 2 * SUBPIXEL, (n, 3, 2))
+    z = rng.uniform(0.0, 1.0, (n, 3))
+    window = np.concatenate([fixed / SUBPIXEL + 0.5, z[..., None]], axis=2)
+    return fixed.astype(np.int64), window
+
+
+def test_a_lone_batch_draws_its_back_faces_last_however_few_rows_its_triangles_span(monkeypatch):
+    """Triangles of about two rows (under BACKS_LAST_ROWS, over LONE_ROWS): drawn as one batch
+    of more than BATCH with back faces last, the raster consults the tiles; drawn in batches,
+    or as a batch no larger than BATCH, it does not. Each fills the buffer drawing in order fills."""
+    from renderer import raster
+    from renderer.hidden_back_faces import BACKS_LAST_ROWS
+    from renderer.indexed_triangles import whole_triangles
+    from renderer.pixel_centres import LONE_ROWS
+    from renderer.raster import mean_rows, rasterize_visibility, set_up
+    from renderer.workspace import Workspace
+
+    width, height = 64, 48
+    fixed, window = small_soup(np.random.default_rng(3), 3000, width, height)
+    assert LONE_ROWS <= mean_rows(set_up(fixed, window, height, False)) < BACKS_LAST_ROWS
+    in_order = rasterize_visibility(whole_triangles(fixed, window), width, height)
+    for lone, batch, consulted in ((1000, None, True), (1000, len(fixed), True), (1000, 500, False),
+                                   (len(fixed), None, False)):
+        monkeypatch.setattr(raster, "BATCH", lone)
+        ws = Workspace()
+        vis = rasterize_visibility(whole_triangles(fixed, window), width, height, ws=ws, batch=batch, backs_last=True)
+        tiles = ws.array("raster.tiles", (2, 3, 4), np.int32)
+        assert (tiles[1] >= 0).any() == consulted, batch
+        for name in ("tri_index", "depth", "covered"):
+            np.testing.assert_array_equal(getattr(vis, name), getattr(in_order, name), err_msg=f"{batch} {name}")

@@ -329,6 +329,7 @@ def test_the_lean_path_gives_the_bytes_of_the_plain_path(settings, renumbered, m
     assert min(straddling) > 0 and whole > 50 and rejected > 50 and pieces > 50
     plain, plain_stages = render_stages(scene, RenderOptions(lean=False))
     monkeypatch.setattr(renderer.pipeline, "BATCH", 7)
+    monkeypatch.setattr(renderer.pipeline, "ONE_BATCH", 0)  # no frame drawn as one batch
     monkeypatch.setattr(renderer.visible, "PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
     monkeypatch.setattr(renderer.visible, "HELD_PIXELS_PER_TRIANGLE", 10 ** 9 if renumbered else 0)
     assert renderer.visible.renumbering_pays(1, *scene.image.size) == renumbered
@@ -624,3 +625,29 @@ def test_a_frame_with_nothing_opaque_gives_the_bytes_of_the_cleared_buffers(tran
     assert 0.2 < frame.coverage.mean() < 0.9
     for name in ("rgb", "depth", "coverage"):
         np.testing.assert_array_equal(getattr(frame, name), getattr(cleared, name), err_msg=name)
+
+
+def test_a_frame_of_up_to_one_batch_of_triangles_is_set_up_and_drawn_at_once(monkeypatch):
+    """The lean path hands the raster all of a frame's triangles as one batch up to
+    ONE_BATCH, else batches of BATCH (renderer.pipeline.raster_batch); the plain path, none."""
+    import renderer.pipeline
+    from renderer import RenderOptions
+    from renderer.pipeline import raster_batch
+
+    assert raster_batch(10) == 10 and raster_batch(renderer.pipeline.ONE_BATCH) == renderer.pipeline.ONE_BATCH
+    assert raster_batch(renderer.pipeline.ONE_BATCH + 1) == renderer.pipeline.BATCH
+    asked = []
+    real = renderer.pipeline.rasterize_visibility
+
+    def spy(triangles, *args, **kwargs):
+        asked.append((triangles.count, kwargs["batch"]))
+        return real(triangles, *args, **kwargs)
+
+    monkeypatch.setattr(renderer.pipeline, "rasterize_visibility", spy)
+    scene = load_scene("icosphere:level=2").with_overrides(size=(48, 48))  # 320 triangles, all in view
+    monkeypatch.setattr(renderer.pipeline, "BATCH", 100)
+    render(scene)
+    monkeypatch.setattr(renderer.pipeline, "ONE_BATCH", 319)
+    render(scene)
+    render(scene, RenderOptions(lean=False))
+    assert asked == [(320, 320), (320, 100), (320, None)]
