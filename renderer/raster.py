@@ -496,28 +496,31 @@ BATCH = 1 << 15
 """Triangles set up and drawn at a time: the set-up tables stay this long (about 5 MB)."""
 
 
-def set_up_corners(corners: CornerIndex, vertices: WindowVertices, height: int, cull_back: bool, ws=None,
-                   name="raster", lone_test: bool = False, n_bands: int = 1, weights: bool = True) -> TriangleSetup:
-    """Allocate (in workspace ``ws`` under ``name``) and run :func:`setup_triangles` on the
-    triangles whose corners ``corners`` names among the rows of ``vertices``
-    (:class:`renderer.window.WindowVertices`); those whose box holds no pixel centre are
-    dropped first from the vertices' cells when they come with them (:data:`DROP_EMPTY_BOXES`);
-    ``lone_test``: drop those whose box's lone pixel centre is outside (:data:`DROP_MISSED_CENTRES`);
-    ``n_bands``: the bands the raster draws them in (their lists, ``band_listed``); ``weights``
-    False: the weights' plane is not worked out (:data:`DROP_WEIGHTS`)."""
-    k_count = len(corners.source)
+def setup_tables(k_count: int, n_bands: int, ws=None, name: str = "raster") -> TriangleSetup:
+    """Unwritten :class:`TriangleSetup` tables for ``k_count`` triangles in ``n_bands`` bands (``ws``, ``name``)."""
     chunks, lists = -(-k_count // int(SETUP_CHUNK)), -(-k_count // LIST_CHUNK)
-    tallies = empty(ws, f"{name}.tallies", (chunks, 1 + n_bands), np.int64)
-    setup = TriangleSetup(front=empty(ws, f"{name}.front", k_count, np.bool_),
-                          ccw=empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64),
-                          rows=empty(ws, f"{name}.rows", (k_count, 2), np.int64),
-                          plane=empty(ws, f"{name}.plane", (k_count, 11)),
-                          listed=empty(ws, f"{name}.listed", k_count, np.int32),
-                          counts=empty(ws, f"{name}.counts", (lists, 2), np.int64),
-                          band_listed=empty(ws, f"{name}.band_listed", (n_bands, k_count), np.int32), tallies=tallies)
+    return TriangleSetup(front=empty(ws, f"{name}.front", k_count, np.bool_),
+                         ccw=empty(ws, f"{name}.ccw", (k_count, 3, 2), np.int64),
+                         rows=empty(ws, f"{name}.rows", (k_count, 2), np.int64),
+                         plane=empty(ws, f"{name}.plane", (k_count, 11)),
+                         listed=empty(ws, f"{name}.listed", k_count, np.int32),
+                         counts=empty(ws, f"{name}.counts", (lists, 2), np.int64),
+                         band_listed=empty(ws, f"{name}.band_listed", (n_bands, k_count), np.int32),
+                         tallies=empty(ws, f"{name}.tallies", (chunks, 1 + n_bands), np.int64))
+
+
+def set_up_corners(corners: CornerIndex, vertices: WindowVertices, height: int, cull_back: bool, ws=None,
+                   name="raster", lone_test: bool = False, n_bands: int = 1, weights: bool = True,
+                   tables: TriangleSetup | None = None) -> TriangleSetup:
+    """Run :func:`setup_triangles` on the triangles whose corners ``corners`` names among the rows of
+    ``vertices``, into ``tables`` (:func:`setup_tables` for as many triangles; None: made in ``ws``
+    under ``name``). Boxes without pixel centres dropped first by the vertices' cells when they come
+    with them (:data:`DROP_EMPTY_BOXES`); ``lone_test``: :data:`DROP_MISSED_CENTRES`; ``n_bands``: the
+    raster's bands (``band_listed``); ``weights`` False: :data:`DROP_WEIGHTS`."""
+    setup = setup_tables(len(corners.source), n_bands, ws, name) if tables is None else tables
     drops = ((DROP_BACK_FACES if cull_back else 0) | (DROP_MISSED_CENTRES if lone_test else 0)
              | (DROP_EMPTY_BOXES if len(vertices.cells) else 0) | (0 if weights else DROP_WEIGHTS))
-    setup_triangles(corners, vertices, height, drops, *setup[:4], setup.band_listed, tallies)
+    setup_triangles(corners, vertices, height, drops, *setup[:4], setup.band_listed, setup.tallies)
     return setup
 
 
@@ -541,20 +544,16 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
                          batch: int | None = BATCH, backs_last: bool = False) -> Visibility:
     """Set up the triangles and fill the visibility buffer (the Python wrapper the pipeline calls).
 
-    The triangles (:class:`IndexedTriangles`) are drawn in order, ``batch`` at a time (None:
-    all at once): each batch is set up (:func:`setup_triangles`) and filled
-    (:func:`rasterize`) over what the batches before it left, so the buffer is the one a
-    single pass over all of them fills. With a workspace ``ws`` every array but the frame's
-    (depth and coverage, fresh each time) lives in it.
-    ``n_bands`` defaults to one per thread (:func:`renderer.bands.raster_bands`);
-    ``depth_test=False`` turns the z-buffer test off; ``cull_back=True`` drops back-facing triangles.
+    The triangles (:class:`IndexedTriangles`) are drawn in order, ``batch`` at a time (None: all
+    at once), each set up (:func:`setup_triangles`, into the same tables) and filled (:func:`rasterize`)
+    over what the batches before left: the buffer one pass fills. With a workspace ``ws`` every
+    array but the frame's depth and coverage lives in it. ``n_bands``: one per thread by default
+    (:func:`renderer.bands.raster_bands`); ``depth_test=False``: no z-buffer test; ``cull_back``: culling.
     ``backs_last=True`` (with the depth test): in each batch whose triangles span :data:`~renderer.hidden_back_faces.BACKS_LAST_ROWS`
-    rows or more on average, and in a lone batch of over :data:`BATCH` not finer than the pixels, the back faces
-    after the front faces (listed, :mod:`renderer.draw_lists`), skipping those a tile z-buffer
-    shows hidden: the same buffer, quicker for closed surfaces seen from outside.
-    A batch after one finer than the pixels (:data:`~renderer.pixel_centres.LONE_ROWS`) drops
-    triangles by their corners' centre cells and tests lone centres: the same buffer.
-    No triangles (a scene with nothing opaque): the clear buffer, :func:`clear_visibility`.
+    rows or more on average, and in a lone batch of over :data:`BATCH` not finer than the pixels, the back faces after
+    the front faces (:mod:`renderer.draw_lists`), skipping those a tile z-buffer shows hidden: the same buffer.
+    A batch after one finer than the pixels (:data:`~renderer.pixel_centres.LONE_ROWS`) drops triangles
+    by their corners' centre cells and tests lone centres: the same buffer. No triangles: :func:`clear_visibility`.
     """
     tri_index = empty(ws, "raster.tri_index", (height, width), np.int32)
     if triangles.count == 0:
@@ -564,12 +563,14 @@ def rasterize_visibility(triangles: IndexedTriangles, width: int, height: int, f
     tiles = new_tiles(height, width, ws) if backs_last and depth_test else NO_TILES
     step = count if batch is None else int(batch)
     span = float("inf")  # the mean rows of the batch before: no batch, no lone-centre test nor drop by cells
-    for a in range(0, count, step):
-        corners = triangles.corners.batch(a, min(a + step, count))
-        vertices = triangles.vertices if span < LONE_ROWS else triangles.vertices._replace(cells=NO_CELLS)
-        setup = set_up_corners(corners, vertices, height, cull_back, ws, "raster", lone_test=span < LONE_ROWS,
-                               n_bands=bands, weights=WEIGHTS_IN_RASTER)
-        with one_band_at_a_time():
+    whole = setup_tables(step, bands, ws, "raster") if step <= count else None  # written by each whole batch
+    with one_band_at_a_time():  # the set-up too, once a frame (:func:`renderer.bands.one_band_at_a_time`)
+        for a in range(0, count, step):
+            corners = triangles.corners.batch(a, min(a + step, count))
+            vertices = triangles.vertices if span < LONE_ROWS else triangles.vertices._replace(cells=NO_CELLS)
+            setup = set_up_corners(corners, vertices, height, cull_back, ws, "raster", lone_test=span < LONE_ROWS,
+                                   n_bands=bands, weights=WEIGHTS_IN_RASTER,
+                                   tables=whole if a + step <= count else None)
             span = mean_rows(setup)  # chooses the kernel, the order and the next batch's test, never the pixels
             kernel = rasterize_walking if span >= TALL_ROWS else rasterize
             ends = ((FIRST_BATCH if a == 0 else 0) | (LAST_BATCH if a + step >= count else 0)

@@ -709,3 +709,47 @@ def test_the_raster_fills_the_same_buffer_with_and_without_the_weights_plane(mon
     assert len(np.unique(buffers[False].tri_index)) > 20
     for name in ("depth", "tri_index", "covered"):
         np.testing.assert_array_equal(getattr(buffers[False], name), getattr(buffers[True], name))
+
+
+def test_a_frames_whole_batches_are_set_up_into_one_set_of_tables_and_its_last_short_one_into_its_own():
+    """rasterize_visibility makes the set-up tables of a whole batch once a frame
+    (:func:`renderer.raster.setup_tables`) and sets up every whole batch into them; a shorter
+    last batch gets tables of its own length (its chunks are all the raster reads): the
+    buffer of one pass either way (checked by the batch test above)."""
+    from unittest import mock
+    import renderer.raster as raster
+
+    fixed, window = triangles(*[[(0, 0), (4, 0), (0, 4)]] * 10)
+    given = []
+    set_up_plain = raster.set_up_corners
+
+    def set_up_corners(*args, tables=None, **kwargs):
+        given.append(tables)
+        return set_up_plain(*args, tables=tables, **kwargs)
+
+    with mock.patch.object(raster, "set_up_corners", set_up_corners):
+        raster.rasterize_visibility(raster.whole_triangles(fixed, window), 8, 8, batch=4)
+    assert [t is None for t in given] == [False, False, True]
+    assert given[0] is given[1] and len(given[0].rows) == 4
+
+
+def test_a_frames_set_up_runs_in_the_bands_hand_out_one_iteration_at_a_time():
+    """The raster enters :func:`renderer.bands.one_band_at_a_time` once a frame, its batches'
+    set-up included: numba hands the set-up's chunks out one at a time, as the bands
+    (measured quicker on the big meshes than a block around each batch's fill)."""
+    from unittest import mock
+    import numba
+    import renderer.raster as raster
+    from renderer.bands import BAND_CHUNK
+
+    fixed, window = triangles(*[[(0, 0), (4, 0), (0, 4)]] * 10)
+    chunk_sizes = []
+    setup_plain = raster.setup_triangles
+
+    def setup_triangles(*args):
+        chunk_sizes.append(numba.get_parallel_chunksize())
+        return setup_plain(*args)
+
+    with mock.patch.object(raster, "setup_triangles", setup_triangles):
+        raster.rasterize_visibility(raster.whole_triangles(fixed, window), 8, 8, batch=4)
+    assert chunk_sizes == [BAND_CHUNK] * 3 and numba.get_parallel_chunksize() != BAND_CHUNK
