@@ -28,7 +28,7 @@ from renderer.prefetch import prefetch_row
 from renderer.raster import EMPTY
 from renderer.reflection.materials import FACE_COLOUR, PIXEL_FACE_NORMAL, any_face_colour
 from renderer.reflection.registry import light_points, span_normal_only, spans_normal_only, store_span
-from renderer.spans import AHEAD_CORNERS, AHEAD_SOURCE, F0, face_toward_viewer
+from renderer.spans import AHEAD_CORNERS, AHEAD_SOURCE, F0, corners_toward_viewer
 from renderer.workspace import empty
 
 
@@ -58,7 +58,10 @@ def held_colours(frags, geo, materials, lights, points, colour, stored, out):
     :func:`held_per_triangle` into ``out`` (K, 3) uint8 (other rows are left as they are):
     its plane normal turned toward the viewer, as float32 (the normal
     :func:`renderer.spans.span_pixel` gives every pixel of a flat triangle), lit by the
-    object's span kernel and stored as 8 bits.
+    object's span kernel and stored as 8 bits. The normal is worked out here from the
+    triangle's corners (:func:`renderer.spans.corners_toward_viewer`, the bits of the frame's
+    table of plane normals), so a frame painted from held colours alone makes no such table
+    (:func:`renderer.pipeline.normals_of_shown`).
     An object's triangles are lit together, as one run of points (``points`` (6, ≥ K),
     ``colour`` (3, ≥ K) float32 and ``stored`` (≥ K, 3) uint8 scratch): one call, whose loop
     runs 8 triangles at a time. The positions are not needed (the colour depends on the
@@ -66,9 +69,8 @@ def held_colours(frags, geo, materials, lights, points, colour, stored, out):
 
     The winners come in the order the image shows them, so the rows read for each are at
     random over the mesh's tables: the rows of the triangle :data:`~renderer.spans.AHEAD_SOURCE`
-    on (its object, corners and plane normal) and the first corner of the one
-    :data:`~renderer.spans.AHEAD_CORNERS` on (whose position says which way the normal turns),
-    as the span table does, are asked for ahead (:mod:`renderer.prefetch`). Measured, the kernel alone
+    on (its object and corners) and the three corners of the one
+    :data:`~renderer.spans.AHEAD_CORNERS` on are asked for ahead (:mod:`renderer.prefetch`). Measured, the kernel alone
     on its frame's input, this against no reading ahead: ico7-flat 0.88–0.95 of the time at
     512², 0.93 at 1024², menger4 at 512² 0.87. Written out in the loop: as a function of the
     frame's tables, inlined or not, it took 3–5 times as long (reference counts)."""
@@ -81,13 +83,15 @@ def held_colours(frags, geo, materials, lights, points, colour, stored, out):
             if k + AHEAD_SOURCE < count:  # read ahead, written out here: a call would count references to the tables
                 ahead = frags.clip_source[k + AHEAD_SOURCE]
                 prefetch_row(geo.triangles, ahead)
-                prefetch_row(geo.face_normals, ahead)
                 prefetch_row(geo.tri_object, ahead)
-            if k + AHEAD_CORNERS < count and not geo.parallel:
-                prefetch_row(geo.verts_view, geo.triangles[frags.clip_source[k + AHEAD_CORNERS], 0])
+            if k + AHEAD_CORNERS < count:
+                near = frags.clip_source[k + AHEAD_CORNERS]
+                prefetch_row(geo.verts_view, geo.triangles[near, 0])
+                prefetch_row(geo.verts_view, geo.triangles[near, 1])
+                prefetch_row(geo.verts_view, geo.triangles[near, 2])
             s = frags.clip_source[k]
             if geo.tri_object[s] == o:
-                nx, ny, nz = face_toward_viewer(geo, s)
+                nx, ny, nz = corners_toward_viewer(geo, s)
                 points[0, n], points[1, n], points[2, n] = F0, F0, F0
                 points[3, n], points[4, n], points[5, n] = np.float32(nx), np.float32(ny), np.float32(nz)
                 n += 1

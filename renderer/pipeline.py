@@ -347,6 +347,19 @@ def translucent_triangles(clipped: ClippedMesh, opacity: np.ndarray, ws=None) ->
     return kept(ws, "pipeline.none_translucent", clipped.count, partial(np.zeros, clipped.count, np.bool_))
 
 
+def normals_of_shown(materials, every_normal: bool, reads: str, any_translucent: bool) -> bool:
+    """True when a frame works out the plane normals of the triangles it shows
+    (:func:`shown_sources`): some object is flat, the transform did not make them all
+    (``every_normal``), and something reads them. A frame painted from held colours alone
+    (``reads`` is :data:`~renderer.shading.HELD`) with nothing translucent reads none: the
+    held colours work their normals out from the corners (:func:`renderer.held_colours.held_colours`).
+    Measured, whole frames alternating in one process against a table worked out first and
+    read by the held colours (30 pairs): ico7-flat 0.96 (512²) and 0.97 (1024²), the level-4
+    sponge 0.98 and 0.995; the small flat frames 0.98–1.01 (60 pairs), two copies of the old
+    0.98–1.02 (docs/performance.md)."""
+    return any_flat(materials) and not every_normal and not (reads == HELD and not any_translucent)
+
+
 def shown_sources(won: ClippedMesh, translucent_sources: np.ndarray) -> np.ndarray:
     """The source triangles whose plane normals a flat frame reads (int64, repeats allowed):
     those that won a pixel of the opaque pass and every translucent one. Only these are
@@ -496,7 +509,7 @@ def _render(scene, options: RenderOptions, keep_stages: bool) -> tuple[Frame, St
         won = opaque.take_in_order(visible_triangles(vis.tri_index, opaque.count, ws), ws, "won")
     else:
         won = opaque  # vis.tri_index counts every opaque triangle
-    if any_flat(materials) and not every_normal:
+    if normals_of_shown(materials, every_normal, reads, any_translucent):
         seen_through = clipped.clip_source[translucent] if any_translucent else clipped.clip_source[:0]
         face_normals_of(geo.verts_view, geo.triangles, shown_sources(won, seen_through), geo.face_normals)
 

@@ -17,12 +17,28 @@ from renderer.jit import njit, prange
 @njit(cache=True, inline="always")
 def plane_normal(a, b, c, n):
     """Unit (b − a) × (c − a) into ``n`` (zero for a degenerate triangle)."""
-    ux, uy, uz = b[0] - a[0], b[1] - a[1], b[2] - a[2]
-    vx, vy, vz = c[0] - a[0], c[1] - a[1], c[2] - a[2]
-    n[0], n[1], n[2] = uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx
-    length = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+    n[0], n[1], n[2] = unit_cross(a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2])
+
+
+@njit(cache=True, inline="always")
+def corners_normal(verts, triangles, t):
+    """:func:`plane_normal` of triangle ``t`` of ``triangles`` (T, 3) of ``verts``, as a 3-tuple:
+    the same bits as its row of :func:`face_normals_of`, read from the corners themselves."""
+    i0, i1, i2 = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+    return unit_cross(verts[i0, 0], verts[i0, 1], verts[i0, 2], verts[i1, 0], verts[i1, 1], verts[i1, 2],
+                      verts[i2, 0], verts[i2, 1], verts[i2, 2])
+
+
+@njit(cache=True, inline="always")
+def unit_cross(ax, ay, az, bx, by, bz, cx, cy, cz):
+    """Unit (b − a) × (c − a) of three points given by their coordinates (zero for a degenerate triangle)."""
+    ux, uy, uz = bx - ax, by - ay, bz - az
+    vx, vy, vz = cx - ax, cy - ay, cz - az
+    nx, ny, nz = uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx
+    length = math.sqrt(nx * nx + ny * ny + nz * nz)
     if length > 0.0:
-        n[0], n[1], n[2] = n[0] / length, n[1] / length, n[2] / length
+        return nx / length, ny / length, nz / length
+    return nx, ny, nz
 
 
 @njit(cache=True, parallel=True)

@@ -39,6 +39,7 @@ import numpy as np
 
 from renderer.clip import corner_row
 from renderer.jit import njit, prange
+from renderer.plane_normals import corners_normal
 from renderer.prefetch import prefetch_row
 from renderer.window import signed_area_corners, window_edges
 
@@ -269,7 +270,22 @@ def face_toward_viewer(geo, s):
     """Source triangle ``s``'s unit plane normal turned toward the viewer: perspective,
     so that n·P ≤ 0 at its first vertex P (the sign of n·P is the same over the whole
     plane); parallel, so that n.z ≥ 0. One decision per triangle."""
-    nx, ny, nz = geo.face_normals[s, 0], geo.face_normals[s, 1], geo.face_normals[s, 2]
+    return toward_viewer(geo, s, geo.face_normals[s, 0], geo.face_normals[s, 1], geo.face_normals[s, 2])
+
+
+@njit(cache=True, inline="always")
+def corners_toward_viewer(geo, s):
+    """:func:`face_toward_viewer` with the plane normal worked out from the triangle's corners
+    (:func:`renderer.plane_normals.corners_normal`, the same bits), for a frame that made no
+    table of plane normals."""
+    nx, ny, nz = corners_normal(geo.verts_view, geo.triangles, s)
+    return toward_viewer(geo, s, nx, ny, nz)
+
+
+@njit(cache=True, inline="always")
+def toward_viewer(geo, s, nx, ny, nz):
+    """Source triangle ``s``'s unit plane normal ``(nx, ny, nz)``, negated if it points away from
+    the viewer (:func:`face_toward_viewer`)."""
     if geo.parallel:
         away = nz < 0.0
     else:

@@ -40,7 +40,8 @@ def test_the_helper_alone_fills_an_empty_cache_with_all_the_first_frame_compiles
     ran on its own, a fresh process draws that frame without compiling anything. When a change
     of the renderer changes what the frame compiles, record again:
     ``python -m renderer.compile_ahead --record``."""
-    assert len(first_frame_kernels()) >= 10
+    assert {"transform_vertices", "setup_triangles", "rasterize", "held_colours", "paint_rows"} <= {
+        k.name for k in first_frame_kernels()}
     env = _environment(tmp_path / "kernels")
     helper = subprocess.run([sys.executable, "-m", "renderer.compile_ahead"], cwd=ROOT, env=env,
                             capture_output=True, text=True, timeout=900)

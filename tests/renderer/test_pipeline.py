@@ -545,6 +545,33 @@ def test_a_frame_painted_from_held_colours_builds_no_planes_and_keeps_the_bytes(
     assert count > 0 and planes == corners == count
 
 
+def test_a_frame_painted_from_held_colours_alone_works_out_no_plane_normals(monkeypatch):
+    """A flat icosphere under a lone headlight is painted from held colours, whose normals come
+    from the corners: the frame works out no table of plane normals (the table poisoned: the
+    bytes of a frame that worked them all out). A translucent object's fragments read the
+    table, so with one in the frame the normals of what it shows are worked out."""
+    import renderer.pipeline as pipeline
+    from renderer.reflection.registry import material_table
+    from renderer.shading import EVERYTHING, HELD
+    from renderer.workspace import thread_workspace
+
+    scene = load_scene("icosphere:level=3").with_overrides(shading="flat", size=(96, 72))
+    assert [light.kind for light in scene.lights] == ["headlight"]
+    monkeypatch.setattr(pipeline, "any_face_colour", lambda materials: True)
+    expected = render(scene).rgb
+    monkeypatch.undo()
+    worked_out = []
+    original = pipeline.face_normals_of
+    monkeypatch.setattr(pipeline, "face_normals_of", lambda *a: worked_out.append(len(a[2])) or original(*a))
+    thread_workspace().array("geometry.face_normals", (scene.objects[0].mesh.n_triangles, 3)).fill(np.nan)
+    np.testing.assert_array_equal(render(scene).rgb, expected)
+    assert worked_out == []
+    materials = material_table(scene)
+    assert not pipeline.normals_of_shown(materials, False, HELD, any_translucent=False)
+    assert pipeline.normals_of_shown(materials, False, HELD, any_translucent=True)
+    assert pipeline.normals_of_shown(materials, False, EVERYTHING, any_translucent=False)
+
+
 def test_a_frame_without_translucent_objects_keeps_its_all_opaque_mask_across_frames():
     """Which clipped triangles are translucent (``translucent_triangles``): in a frame without a
     translucent object, all False, and the array is the workspace's from frame to frame (not
