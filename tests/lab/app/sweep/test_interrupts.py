@@ -28,9 +28,22 @@ def test_the_first_ctrl_c_sets_requested_and_says_how_to_stop_at_once():
     assert said.getvalue().strip() == STOPPING and "Ctrl-C again" in STOPPING
 
 
-def test_a_second_ctrl_c_raises_keyboard_interrupt():
+@pytest.fixture
+def python_handler():
+    """Python's own SIGINT handler in place for the test, and whatever was there put back after:
+    the suite runs many tests in one process, and once (CI, a clean clone) an earlier one left
+    another handler, which a second Ctrl-C then went to instead of raising."""
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, before)
+
+
+def test_a_second_ctrl_c_raises_keyboard_interrupt(python_handler):
+    """The first Ctrl-C puts back the handler that was there before (Python's own here), so the
+    second goes to it and raises KeyboardInterrupt at once."""
     with StopRequest(stream=io.StringIO()) as stop:
         ctrl_c()
+        assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
         with pytest.raises(KeyboardInterrupt):
             ctrl_c()
     assert stop.requested
